@@ -43,7 +43,17 @@ fn scene(name: &str) -> SceneFile {
 
 /// Renders `compiled` with the scene's settings and checks the image free of NaN and infinities.
 fn render(gpu: &Gpu, compiled: &CompiledScene, what: &str) -> (LinearImage, RenderStats) {
-    let mut renderer = Renderer::new(gpu, compiled, RenderOptions::default()).expect("renderer");
+    render_with(gpu, compiled, RenderOptions::default(), what)
+}
+
+/// [`render`] with `options`.
+fn render_with(
+    gpu: &Gpu,
+    compiled: &CompiledScene,
+    options: RenderOptions,
+    what: &str,
+) -> (LinearImage, RenderStats) {
+    let mut renderer = Renderer::new(gpu, compiled, options).expect("renderer");
     let result = renderer.render(&mut |_, _| {}).expect("render");
     let s = result.stats;
     eprintln!(
@@ -151,15 +161,15 @@ const WT_GRID: u32 = 16;
 /// x of the four objects' centres: icosphere, fan bipyramid, cube, grid box.
 const WT_CENTRES: [f32; 4] = [-30.0, -10.0, 10.0, 30.0];
 
-/// `scenes/extreme/watertight.rt` with this file's sizes and centres.
-fn watertight_scene() -> SceneFile {
+/// `scenes/extreme/watertight.rt` with this file's sizes, and its centres moved by `offset` along x.
+fn watertight_scene(offset: f32) -> SceneFile {
     scene("watertight")
         .set("SIZE", format!("{WT_SIZE}u"))
         .set("AXIS_START", format!("{}u", WT_AXIS_ROW * WT_SIZE))
-        .set("C0", format!("{:?}", WT_CENTRES[0]))
-        .set("C1", format!("{:?}", WT_CENTRES[1]))
-        .set("C2", format!("{:?}", WT_CENTRES[2]))
-        .set("C3", format!("{:?}", WT_CENTRES[3]))
+        .set("C0", format!("{:?}", WT_CENTRES[0] + offset))
+        .set("C1", format!("{:?}", WT_CENTRES[1] + offset))
+        .set("C2", format!("{:?}", WT_CENTRES[2] + offset))
+        .set("C3", format!("{:?}", WT_CENTRES[3] + offset))
 }
 
 /// Watertightness (Woop, Benthin and Wald, JCGT 2013): 1,048,576 rays, each aimed exactly at a
@@ -176,17 +186,55 @@ fn watertight_scene() -> SceneFile {
 /// at t = d (the origin's distance to the face, an integer) within a relative 1e-6.
 #[test]
 fn rays_at_shared_edges_and_vertices_of_closed_meshes_never_leak() {
-    let test = "rays_at_shared_edges_and_vertices_of_closed_meshes_never_leak";
+    watertight(
+        "rays_at_shared_edges_and_vertices_of_closed_meshes_never_leak",
+        0.0,
+        1e-4,
+    );
+}
+
+/// The same rays and meshes 8,192 units from the origin along x, where a unit in the last place is
+/// 2^-10 (the static objects share one world-space BVH, whose frame origin is there too, so the
+/// box test's padding must cover the rounding of box corners at that magnitude, not only of the
+/// distances along the ray). The aimed rays' origins are rounded to that grid, so they reach
+/// their target within about 2e-3 of t = 2/3; the axis-parallel rays stay exact.
+#[test]
+fn rays_at_shared_edges_and_vertices_far_from_the_origin_never_leak() {
+    watertight(
+        "rays_at_shared_edges_and_vertices_far_from_the_origin_never_leak",
+        8192.0,
+        4e-3,
+    );
+}
+
+/// Renders `scenes/extreme/watertight.rt` with its objects `offset` along x, once with an
+/// object-space BVH per object and once with the four objects flattened into one world-space BVH
+/// (whose quantisation frame lies `offset` from the origin), and checks every pixel of both: the
+/// aimed rays' hits within `aimed_tol` of t = 2/3.
+fn watertight(test: &str, offset: f32, aimed_tol: f64) {
     let Some(gpu) = gpu_or_skip(test) else {
         return;
     };
-    let dir = temp_dir("extreme", "watertight");
+    let dir = temp_dir("extreme", test);
     let (p, t) = fan_bipyramid(96);
     write_obj(&dir.join("fan.obj"), &p, &t);
     let (p, t) = grid_box(WT_GRID);
     write_obj(&dir.join("grid.obj"), &p, &t);
-    let compiled = compile(&dir, &watertight_scene());
-    let (img, stats) = render(&gpu, &compiled, "watertight");
+    let compiled = compile(&dir, &watertight_scene(offset));
+    for flatten in [false, true] {
+        let options = RenderOptions {
+            flatten,
+            ..RenderOptions::default()
+        };
+        let (img, stats) = render_with(&gpu, &compiled, options, "watertight");
+        assert_eq!(stats.flattened.0, if flatten { 4 } else { 0 });
+        check_watertight(&img, &stats, aimed_tol);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The checks of [`watertight`] on one image.
+fn check_watertight(img: &LinearImage, stats: &RenderStats, aimed_tol: f64) {
     assert_eq!(
         stats.triangles,
         5120 + 192 + 12 + 6 * 2 * u64::from(WT_GRID * WT_GRID)
@@ -196,11 +244,11 @@ fn rays_at_shared_edges_and_vertices_of_closed_meshes_never_leak() {
     let (mut aimed, mut axis) = (0u64, 0u64);
     for y in 0..WT_SIZE {
         for x in 0..WT_SIZE {
-            let [t, object, marker] = rgb(&img, x, y);
+            let [t, object, marker] = rgb(img, x, y);
             let i = y * WT_SIZE + x;
             let (want_object, want_t, tol) = if y < WT_AXIS_ROW {
                 aimed += 1;
-                (i % 4, 2.0 / 3.0, 1e-4)
+                (i % 4, 2.0 / 3.0, aimed_tol)
             } else {
                 axis += 1;
                 let k = i - WT_AXIS_ROW * WT_SIZE;
@@ -249,7 +297,6 @@ fn rays_at_shared_edges_and_vertices_of_closed_meshes_never_leak() {
         wrong.len(),
         &wrong[..wrong.len().min(20)]
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -105,7 +105,15 @@ struct GpuNode {
     uint b;
 };
 typedef GpuNode type_10[1];
-typedef metal::float4 type_11[1];
+struct BoxRay {
+    metal::float3 step;
+    metal::float3 start_lo;
+    metal::packed_float3 start_hi;
+    float tmin;
+    float unit;
+    char _pad5[12];
+};
+typedef metal::float4 type_12[1];
 struct Hit {
     metal::packed_float3 position;
     float t;
@@ -123,7 +131,7 @@ struct Triangle {
     metal::float3 v1_;
     metal::float3 v2_;
 };
-typedef metal::uint4 type_13[1];
+typedef metal::uint4 type_14[1];
 struct Fog {
     float density;
     char _pad1[12];
@@ -512,15 +520,6 @@ Ray to_object(
     return _e25;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
-) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
@@ -539,25 +538,59 @@ TriangleRay prepare_triangle_ray(
     return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_4[metal::min(kx, 2u)] / dz, d_4[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
+metal::float3 node_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::float3 node_frame_hi(
+    GpuNode header
+) {
+    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
+    return _e5;
+}
+
+BoxRay box_ray(
+    metal::float3 origin_1,
+    metal::float3 scale_1,
+    metal::float3 extent,
+    Ray ray_2
+) {
+    float m_6 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
+    uint e = metal::min(metal::max((as_type<uint>(m_6) >> 23u) & 255u, 1u), 253u);
+    metal::float3 d_5 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    float unit = as_type<float>(e << 23u);
+    metal::float3 floor = metal::float3(0.0000000000009094947);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_5 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_5, s_4 * floor, metal::abs(d_5) < floor);
+    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 start = rel * inv;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
+    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
 metal::float3 hit_triangle(
     TriangleRay r_1,
     uint slot,
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
     metal::float3 a_4 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_4 = _e18.xyz - r_1.origin;
+    metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_5 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
-    float bx = b_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_4[metal::min(r_1.kz, 2u)]);
-    float by = b_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_4[metal::min(r_1.kz, 2u)]);
+    float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
+    float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -566,23 +599,23 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t_5 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_5 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_11 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_11 ? metal::float3(t_5, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 float point_error(
-    metal::float3 origin,
+    metal::float3 origin_2,
     metal::float3 along
 ) {
-    metal::float3 a_5 = metal::abs(origin) + metal::abs(along);
+    metal::float3 a_5 = metal::abs(origin_2) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
 }
 
 Triangle load_triangle(
     uint slot_1,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_1 * 3u];
@@ -613,16 +646,16 @@ float mesh_error(
     metal::float4 r2_ = metal::abs(inst_2.object_to_world_2_);
     metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
     metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
-    metal::float3 e = rounding + carried;
-    return metal::max(metal::max(e.x, e.y), e.z);
+    metal::float3 e_1 = rounding + carried;
+    return metal::max(metal::max(e_1.x, e_1.y), e_1.z);
 }
 
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n = {};
-    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
-    n = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    metal::float2 e_2 = metal::unpack_snorm2x16_to_float(bits);
+    n = metal::float3(e_2.x, e_2.y, (1.0 - metal::abs(e_2.x)) - metal::abs(e_2.y));
     float _e14 = n.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n;
@@ -647,26 +680,26 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_2,
+    Ray ray_3,
     Candidate c,
     device type_9 const& instances,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_6 = instances[c.slot];
-    float _e11 = point_error(ray_2.origin, ray_2.dir * metal::float3(c.t));
+    float _e11 = point_error(ray_3.origin, ray_3.dir * metal::float3(c.t));
     hit_error = _e11;
-    hit = Hit {ray_2.origin + (ray_2.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
+    hit = Hit {ray_3.origin + (ray_3.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
     n_geo = c.normal;
     n_shade = c.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Triangle _e42 = load_triangle(c.primitive, triangles, _buffer_sizes);
-        metal::float2 b_5 = c.uv;
+        metal::float2 b_7 = c.uv;
         float w_2 = (1.0 - c.uv.x) - c.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
@@ -702,7 +735,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_2.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_3.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -762,49 +795,49 @@ void absorb_query(
 
 bool fog_any_hit(
     Fog m,
-    Ray ray_3,
+    Ray ray_4,
     Hit hit_1,
     thread type_4& scratch
 ) {
     absorb_query(m.density, scratch);
-    return ray_3.kind != RAY_SHADOW;
+    return ray_4.kind != RAY_SHADOW;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_4,
+    Ray ray_5,
     Hit hit_2,
     thread type_4& scratch,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_3, params, _buffer_sizes);
-    bool _e4 = fog_any_hit(_e3, ray_4, hit_2, scratch);
+    bool _e4 = fog_any_hit(_e3, ray_5, hit_2, scratch);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_4,
-    Ray ray_5,
+    Ray ray_6,
     Candidate c_1,
     thread type_4& scratch,
     device type_5 const& params,
     device type_9 const& instances,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_5, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e10 = finish_hit(ray_6, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        if (ray_5.kind == RAY_SHADOW) {
+        if (ray_6.kind == RAY_SHADOW) {
             scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = _e10.front_face ? 1u : 2u;
-            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_6.dir));
         }
-        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, scratch, params, _buffer_sizes);
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10, scratch, params, _buffer_sizes);
         scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
@@ -817,64 +850,48 @@ metal::uint3 node_box_lo(
     return metal::uint3(p_2.x & 65535u, p_2.x >> 16u, p_2.y & 65535u);
 }
 
-metal::float3 node_point(
-    metal::float3 origin_1,
-    metal::float3 scale,
-    metal::uint3 q
-) {
-    return origin_1 + (static_cast<metal::float3>(q) * scale);
-}
-
 metal::uint3 node_box_hi(
     metal::uint3 p_3
 ) {
     return metal::uint3(p_3.y >> 16u, p_3.z & 65535u, p_3.z >> 16u);
 }
 
-float slab(
+float slab_in_frame(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin_2,
-    metal::float3 inv_dir,
-    float tmin_1,
+    BoxRay b_4,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin_2) * inv_dir;
-    metal::float3 t1_ = (hi - origin_2) * inv_dir;
+    metal::float3 t0_ = metal::fma(lo, b_4.step, b_4.start_lo);
+    metal::float3 t1_ = metal::fma(hi, b_4.step, b_4.start_hi);
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
-    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
-    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, b_4.tmin));
+    float exit = metal::min(metal::min(far_2.x, far_2.y), metal::min(far_2.z, tmax_2));
     if (enter <= exit) {
         return enter;
     }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    uint _e27 = F32_INF;
+    return as_type<float>(_e27);
 }
 
 metal::float2 children_entry(
     GpuNode n_2,
-    metal::float3 origin_3,
-    metal::float3 scale_1,
-    Ray ray_6,
-    metal::float3 inv,
+    BoxRay b_5,
     float tmax_3,
     thread uint& F32_INF
 ) {
     metal::uint3 lq = as_type<metal::uint3>(n_2.min);
     metal::uint3 rq = as_type<metal::uint3>(n_2.max);
-    metal::uint3 _e10 = node_box_lo(lq);
-    metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
-    metal::uint3 _e12 = node_box_hi(lq);
-    metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
-    metal::uint3 _e17 = node_box_lo(rq);
-    metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
-    metal::uint3 _e19 = node_box_hi(rq);
-    metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
-    return metal::float2(_e16, _e23);
+    float t_7 = tmax_3 * b_5.unit;
+    metal::uint3 _e9 = node_box_lo(lq);
+    metal::uint3 _e11 = node_box_hi(lq);
+    float _e13 = slab_in_frame(static_cast<metal::float3>(_e9), static_cast<metal::float3>(_e11), b_5, t_7, F32_INF);
+    metal::uint3 _e14 = node_box_lo(rq);
+    metal::uint3 _e16 = node_box_hi(rq);
+    float _e18 = slab_in_frame(static_cast<metal::float3>(_e14), static_cast<metal::float3>(_e16), b_5, t_7, F32_INF);
+    return metal::float2(_e13, _e18);
 }
 
 metal::uint2 pop(
@@ -901,9 +918,9 @@ Candidate intersect_mesh(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -914,24 +931,23 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_7.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_7);
+    TriangleRay _e7 = prepare_triangle_ray(ray_7);
     uint base_1 = inst_5.blas_root;
     GpuNode header_1 = nodes[base_1];
-    metal::float3 origin_4 = header_1.min;
-    metal::float3 scale_2 = header_1.max;
+    metal::float3 _e14 = node_frame_hi(header_1);
+    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_7);
     sp_1 = 0u;
     child = header_1.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e20 = child;
-        if ((_e20 & NODE_LEAF_BIT) != 0u) {
-            uint _e25 = child;
-            uint count_1 = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e32 = child;
-            uint first = _e32 & NODE_FIRST_MASK;
+        uint _e22 = child;
+        if ((_e22 & NODE_LEAF_BIT) != 0u) {
+            uint _e27 = child;
+            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e34 = child;
+            uint first = _e34 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -939,83 +955,83 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e75 = k;
-                    k = _e75 + 1u;
+                    uint _e77 = k;
+                    k = _e77 + 1u;
                 }
                 loop_init = false;
-                uint _e37 = k;
-                if (_e37 >= count_1) {
+                uint _e39 = k;
+                if (_e39 >= count_1) {
                     break;
                 }
-                uint _e41 = k;
-                uint prim = (inst_5.triangle_offset + first) + _e41;
-                float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45, F32_INF, triangles, _buffer_sizes);
-                uint _e49 = F32_INF;
-                if (_e46.x < as_type<float>(_e49)) {
-                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e58.w);
+                uint _e43 = k;
+                uint prim = (inst_5.triangle_offset + first) + _e43;
+                float _e47 = best.t;
+                metal::float3 _e48 = hit_triangle(_e7, prim, ray_7.tmin, _e47, F32_INF, triangles, _buffer_sizes);
+                uint _e51 = F32_INF;
+                if (_e48.x < as_type<float>(_e51)) {
+                    metal::float4 _e60 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e60.w);
                     uint owner = (tag != 0u) ? ((inst_5.object + tag) - 1u) : slot_2;
-                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_5, world_ray, c_6, scratch, params, instances, triangles, hit_error, attributes, _buffer_sizes);
-                    if (_e73) {
+                    Candidate c_6 = Candidate {_e48.x, owner, prim, {}, _e48.yz, {}, metal::float3(0.0)};
+                    bool _e75 = accept(inst_5, world_ray, c_6, scratch, params, instances, triangles, hit_error, attributes, _buffer_sizes);
+                    if (_e75) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e74 = best;
-                            return _e74;
+                            Candidate _e76 = best;
+                            return _e76;
                         }
                     }
                 }
             }
         } else {
-            uint _e78 = child;
-            GpuNode n_6 = nodes[base_1 + _e78];
-            float _e84 = best.t;
-            metal::float2 _e85 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e84, F32_INF);
-            float tl = _e85.x;
-            float tr = _e85.y;
-            uint _e89 = F32_INF;
-            uint _e93 = F32_INF;
-            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
+            uint _e80 = child;
+            GpuNode n_6 = nodes[base_1 + _e80];
+            float _e86 = best.t;
+            metal::float2 _e87 = children_entry(n_6, _e17, _e86, F32_INF);
+            float tl = _e87.x;
+            float tr = _e87.y;
+            uint _e91 = F32_INF;
+            uint _e95 = F32_INF;
+            if ((tl < as_type<float>(_e91)) && (tr < as_type<float>(_e95))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e105 = sp_1;
-                if (_e105 < BLAS_STACK) {
-                    uint _e109 = sp_1;
-                    uint _e111 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 73u)] = _e111;
-                    uint _e116 = sp_1;
-                    sp_1 = _e116 + 1u;
+                uint _e107 = sp_1;
+                if (_e107 < BLAS_STACK) {
+                    uint _e111 = sp_1;
+                    uint _e113 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e111, 73u)] = _e113;
+                    uint _e118 = sp_1;
+                    sp_1 = _e118 + 1u;
                 }
-                uint _e119 = near;
-                child = _e119;
+                uint _e121 = near;
+                child = _e121;
                 continue;
             }
-            uint _e121 = F32_INF;
-            if (tl < as_type<float>(_e121)) {
+            uint _e123 = F32_INF;
+            if (tl < as_type<float>(_e123)) {
                 child = n_6.a;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tr < as_type<float>(_e126)) {
+            uint _e128 = F32_INF;
+            if (tr < as_type<float>(_e128)) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e131 = sp_1;
-        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
-        if (_e132.x == NO_HIT) {
+        uint _e133 = sp_1;
+        metal::uint2 _e134 = pop(TLAS_STACK, _e133, traversal_stack);
+        if (_e134.x == NO_HIT) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    Candidate _e138 = best;
-    return _e138;
+    Candidate _e140 = best;
+    return _e140;
 }
 
 Candidate intersect_object(
@@ -1028,9 +1044,9 @@ Candidate intersect_object(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1056,9 +1072,9 @@ uint medium_at(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1122,9 +1138,9 @@ Ray sample_camera_ray(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1142,11 +1158,35 @@ Ray sample_camera_ray(
     return _e18;
 }
 
-metal::float3 node_frame_hi(
-    GpuNode header
+metal::float3 safe_inverse(
+    metal::float3 d
 ) {
-    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
-    return _e5;
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_7 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_7 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+float slab(
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::float3 origin_3,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_4,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_1 = (lo_1 - origin_3) * inv_dir;
+    metal::float3 t1_1 = (hi_1 - origin_3) * inv_dir;
+    metal::float3 near_3 = metal::min(t0_1, t1_1);
+    metal::float3 far_3 = metal::max(t0_1, t1_1);
+    float enter_1 = metal::max(metal::max(near_3.x, near_3.y), metal::max(near_3.z, tmin_1));
+    float exit_1 = metal::min(metal::min(far_3.x, far_3.y) * 1.0000005, metal::min(far_3.z * 1.0000005, tmax_4));
+    if (enter_1 <= exit_1) {
+        return enter_1;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
 }
 
 Candidate intersect_scene(
@@ -1158,9 +1198,9 @@ Candidate intersect_scene(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1182,85 +1222,87 @@ Candidate intersect_scene(
     metal::float3 _e16 = safe_inverse(ray_10.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
-    metal::float3 origin_5 = header_2.min;
-    metal::float3 scale_3 = header_2.max;
+    metal::float3 origin_4 = header_2.min;
+    metal::float3 scale_2 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
         return _e33;
     }
+    metal::float3 _e34 = node_frame_hi(header_2);
+    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_10);
     sp_2 = 0u;
     child_1 = header_2.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e38 = child_1;
-        if ((_e38 & NODE_LEAF_BIT) != 0u) {
-            uint _e43 = child_1;
-            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e52 = child_1;
-                Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_10, _e55, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-                best_2 = _e56;
-                uint _e58 = best_2.slot;
-                if (shadow_2 && (_e58 != NO_HIT)) {
-                    Candidate _e62 = best_2;
-                    return _e62;
+        uint _e41 = child_1;
+        if ((_e41 & NODE_LEAF_BIT) != 0u) {
+            uint _e46 = child_1;
+            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e55 = child_1;
+                Candidate _e58 = best_2;
+                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_10, _e58, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+                best_2 = _e59;
+                uint _e61 = best_2.slot;
+                if (shadow_2 && (_e61 != NO_HIT)) {
+                    Candidate _e65 = best_2;
+                    return _e65;
                 }
             }
         } else {
-            uint _e63 = child_1;
-            GpuNode n_7 = nodes[base_2 + _e63];
-            float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_10, _e16, _e69, F32_INF);
-            float tl_1 = _e70.x;
-            float tr_1 = _e70.y;
-            uint _e74 = F32_INF;
-            uint _e78 = F32_INF;
-            if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
+            uint _e66 = child_1;
+            GpuNode n_7 = nodes[base_2 + _e66];
+            float _e72 = best_2.t;
+            metal::float2 _e73 = children_entry(n_7, _e36, _e72, F32_INF);
+            float tl_1 = _e73.x;
+            float tr_1 = _e73.y;
+            uint _e77 = F32_INF;
+            uint _e81 = F32_INF;
+            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e89 = sp_2;
-                if (_e89 < TLAS_STACK) {
-                    uint _e92 = sp_2;
-                    uint _e93 = far_1;
-                    traversal_stack.inner[metal::min(_e92, 73u)] = _e93;
-                    uint _e98 = sp_2;
-                    sp_2 = _e98 + 1u;
+                uint _e92 = sp_2;
+                if (_e92 < TLAS_STACK) {
+                    uint _e95 = sp_2;
+                    uint _e96 = far_1;
+                    traversal_stack.inner[metal::min(_e95, 73u)] = _e96;
+                    uint _e101 = sp_2;
+                    sp_2 = _e101 + 1u;
                 }
-                uint _e101 = near_1;
-                child_1 = _e101;
+                uint _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            uint _e103 = F32_INF;
-            if (tl_1 < as_type<float>(_e103)) {
+            uint _e106 = F32_INF;
+            if (tl_1 < as_type<float>(_e106)) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if (tr_1 < as_type<float>(_e108)) {
+            uint _e111 = F32_INF;
+            if (tr_1 < as_type<float>(_e111)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e113 = sp_2;
-        metal::uint2 _e114 = pop(0u, _e113, traversal_stack);
-        if (_e114.x == NO_HIT) {
+        uint _e116 = sp_2;
+        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
+        if (_e117.x == NO_HIT) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    Candidate _e120 = best_2;
-    return _e120;
+    Candidate _e123 = best_2;
+    return _e123;
 }
 
 metal::float3 dispatch_miss(
@@ -1375,8 +1417,8 @@ metal::float3 offset_origin(
     metal::float3 n_3,
     float error
 ) {
-    float d_5 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_11 = n_3 * metal::float3(d_5);
+    float d_6 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_11 = n_3 * metal::float3(d_6);
     metal::float3 _e17 = step_toward(p_5 + offset_11, offset_11);
     return _e17;
 }
@@ -1390,7 +1432,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
-    float tmax_4 = {};
+    float tmax_5 = {};
     n_4 = normal_1;
     metal::float3 _e5 = n_4;
     if (metal::dot(dir_1, _e5) < 0.0) {
@@ -1403,16 +1445,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_4;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_4 = as_type<float>(_e25);
+    tmax_5 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
         metal::float3 light_1 = position + (dir_1 * metal::float3(dist));
         float dd_1 = metal::dot(dir_1, dir_1);
         float along_1 = metal::dot(light_1 - _e23, dir_1) / dd_1;
         metal::float3 l_1 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
+        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
-    float _e59 = tmax_4;
+    float _e59 = tmax_5;
     return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -1425,9 +1467,9 @@ float shadow_transmittance(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1441,10 +1483,10 @@ float shadow_transmittance(
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                Hit start = Hit {ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
+                Hit start_1 = Hit {ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start, scratch, params, _buffer_sizes);
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1, scratch, params, _buffer_sizes);
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
@@ -1481,9 +1523,9 @@ float shadow_query(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1508,9 +1550,9 @@ LightSample point_light(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1540,9 +1582,9 @@ LightSample dispatch_light(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1562,9 +1604,9 @@ LightSample sample_light_query(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1590,9 +1632,9 @@ metal::float3 lambert_shade(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1638,9 +1680,9 @@ metal::float3 dispatch_closest_hit(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1672,9 +1714,9 @@ metal::float3 shade_direct(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1696,9 +1738,9 @@ LightSample sample_light_unoccluded_query(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1723,9 +1765,9 @@ metal::float3 fog_inscatter(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1754,14 +1796,14 @@ metal::float3 fog_inscatter(
     float _e61 = s_1;
     s_1 = metal::min(metal::max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_2 = metal::exp(-(sigma_1) * _e66);
-    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans));
+    float e_3 = metal::exp(-(sigma_1) * _e66);
+    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_3) / (1.0 - trans));
     float _e76 = s_1;
     float r_3 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0);
     float _e91 = s_1;
     LightSample _e97 = sample_light_query(i_5, o + (dir_3 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e97.radiance * metal::float3((sigma_1 * e_2) / pdf);
+    return _e97.radiance * metal::float3((sigma_1 * e_3) / pdf);
 }
 
 metal::float3 fog_medium(
@@ -1776,9 +1818,9 @@ metal::float3 fog_medium(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1789,8 +1831,8 @@ metal::float3 fog_medium(
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
-    float d_6 = t * len;
-    float trans_1 = metal::exp(-(m_4.density) * d_6);
+    float d_7 = t * len;
+    float trans_1 = metal::exp(-(m_4.density) * d_7);
     light = metal::float3(0.0);
     uint _e23 = light_count_query(frame);
     i_6 = 0u;
@@ -1810,7 +1852,7 @@ metal::float3 fog_medium(
         }
         metal::float3 _e27 = light;
         uint _e28 = i_6;
-        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, ray_19.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, ray_19.dir / metal::float3(len), d_7, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1830,9 +1872,9 @@ metal::float3 dispatch_medium(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1853,9 +1895,9 @@ metal::float3 through_medium(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1954,9 +1996,9 @@ metal::float3 trace(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     thread type_16& spawn_dirs,
@@ -2255,7 +2297,7 @@ PassSum add_sample(
     uint per_pass,
     thread uint& ray_count,
     device type_20& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PassSum next = {};
@@ -2306,16 +2348,16 @@ void render_pixel(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_20& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PassSum sums = {};
@@ -2363,16 +2405,16 @@ void render_invocation(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_20& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2393,10 +2435,10 @@ struct renderInput {
 , device type_5 const& params [[buffer(6)]]
 , device type_9 const& instances [[buffer(3)]]
 , device type_10 const& nodes [[buffer(2)]]
-, device type_11 const& triangles [[buffer(4)]]
-, device type_13 const& attributes [[buffer(5)]]
+, device type_12 const& triangles [[buffer(4)]]
+, device type_14 const& attributes [[buffer(5)]]
 , device type_20& counters [[buffer(9)]]
-, device type_11& accum [[buffer(8)]]
+, device type_12& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     type_4 scratch = {};

@@ -87,6 +87,14 @@ struct GpuNode {
     b: u32,
 }
 
+struct BoxRay {
+    step: vec3<f32>,
+    start_lo: vec3<f32>,
+    start_hi: vec3<f32>,
+    tmin: f32,
+    unit: f32,
+}
+
 struct Hit {
     position: vec3<f32>,
     t: f32,
@@ -396,13 +404,6 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
     return _e25;
 }
 
-fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
-    let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
-    return (vec3(1f) / dd);
-}
-
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
     let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
     let ad = abs(d_3);
@@ -419,17 +420,40 @@ fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
     return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
+fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+    return (origin + (vec3<f32>(q) * scale));
+}
+
+fn node_frame_hi(header: GpuNode) -> vec3<f32> {
+    let _e5 = node_point(header.min, header.max, vec3(65535u));
+    return _e5;
+}
+
+fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+    let m_4 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
+    let e = min(max(((bitcast<u32>(m_4) >> 23u) & 255u), 1u), 253u);
+    let d_4 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
+    let unit = bitcast<f32>((e << 23u));
+    let floor_ = vec3(0.0000000000009094947f);
+    let s_3 = select(vec3(1f), vec3(-1f), (d_4 < vec3(0f)));
+    let inv = (vec3(1f) / select(d_4, (s_3 * floor_), (abs(d_4) < floor_)));
+    let rel = (origin_1 - ray_2.origin);
+    let start = (rel * inv);
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
+    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
     let _e8 = triangles[(slot * 3u)];
     let a_4 = (_e8.xyz - r_1.origin);
     let _e18 = triangles[((slot * 3u) + 1u)];
-    let b_5 = (_e18.xyz - r_1.origin);
+    let b_7 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
     let c_5 = (_e28.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
-    let bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
-    let by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
+    let bx = (b_7[min(r_1.kx, 2u)] - (r_1.shear.x * b_7[min(r_1.kz, 2u)]));
+    let by = (b_7[min(r_1.ky, 2u)] - (r_1.shear.y * b_7[min(r_1.kz, 2u)]));
     let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
@@ -438,13 +462,13 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_9);
 }
 
-fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -452,42 +476,35 @@ fn node_box_lo(p: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
-    return (origin + (vec3<f32>(q) * scale));
-}
-
 fn node_box_hi(p_1: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
-fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
-    let t0_ = ((lo - origin_1) * inv_dir);
-    let t1_ = ((hi - origin_1) * inv_dir);
+fn slab_in_frame(lo: vec3<f32>, hi: vec3<f32>, b_4: BoxRay, tmax_2: f32) -> f32 {
+    let t0_ = fma(lo, b_4.step, b_4.start_lo);
+    let t1_ = fma(hi, b_4.step, b_4.start_hi);
     let near_2 = min(t0_, t1_);
     let far_2 = max(t0_, t1_);
-    let enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
-    let exit = min((min(far_2.x, far_2.y) * 1.0000005f), min((far_2.z * 1.0000005f), tmax_2));
+    let enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
+    let exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
     if (enter <= exit) {
         return enter;
     }
-    let _e30 = F32_INF;
-    return bitcast<f32>(_e30);
+    let _e27 = F32_INF;
+    return bitcast<f32>(_e27);
 }
 
-fn children_entry(n: GpuNode, origin_2: vec3<f32>, scale_1: vec3<f32>, ray_3: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+fn children_entry(n: GpuNode, b_5: BoxRay, tmax_3: f32) -> vec2<f32> {
     let lq = bitcast<vec3<u32>>(n.min);
     let rq = bitcast<vec3<u32>>(n.max);
-    let _e10 = node_box_lo(lq);
-    let _e11 = node_point(origin_2, scale_1, _e10);
-    let _e12 = node_box_hi(lq);
-    let _e13 = node_point(origin_2, scale_1, _e12);
-    let _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
-    let _e17 = node_box_lo(rq);
-    let _e18 = node_point(origin_2, scale_1, _e17);
-    let _e19 = node_box_hi(rq);
-    let _e20 = node_point(origin_2, scale_1, _e19);
-    let _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
-    return vec2<f32>(_e16, _e23);
+    let t_5 = (tmax_3 * b_5.unit);
+    let _e9 = node_box_lo(lq);
+    let _e11 = node_box_hi(lq);
+    let _e13 = slab_in_frame(vec3<f32>(_e9), vec3<f32>(_e11), b_5, t_5);
+    let _e14 = node_box_lo(rq);
+    let _e16 = node_box_hi(rq);
+    let _e18 = slab_in_frame(vec3<f32>(_e14), vec3<f32>(_e16), b_5, t_5);
+    return vec2<f32>(_e13, _e18);
 }
 
 fn pop(base: u32, sp: u32) -> vec2<u32> {
@@ -507,100 +524,99 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_4.dir);
-    let _e9 = prepare_triangle_ray(ray_4);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_1 = nodes[base_1];
-    let origin_4 = header_1.min;
-    let scale_2 = header_1.max;
+    let _e14 = node_frame_hi(header_1);
+    let _e17 = box_ray(header_1.min, header_1.max, (_e14 - header_1.min), ray_4);
     sp_1 = 0u;
     child = header_1.a;
     loop {
-        let _e20 = child;
-        if ((_e20 & NODE_LEAF_BIT) != 0u) {
-            let _e25 = child;
-            let count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            let _e32 = child;
-            let first = (_e32 & NODE_FIRST_MASK);
+        let _e22 = child;
+        if ((_e22 & NODE_LEAF_BIT) != 0u) {
+            let _e27 = child;
+            let count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            let _e34 = child;
+            let first = (_e34 & NODE_FIRST_MASK);
             k = 0u;
             loop {
-                let _e37 = k;
-                if (_e37 >= count_1) {
+                let _e39 = k;
+                if (_e39 >= count_1) {
                     break;
                 }
-                let _e41 = k;
-                let prim = ((inst_2.triangle_offset + first) + _e41);
-                let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
-                let _e49 = F32_INF;
-                if (_e46.x < bitcast<f32>(_e49)) {
-                    let _e58 = triangles[((prim * 3u) + 1u)];
-                    let tag = bitcast<u32>(_e58.w);
+                let _e43 = k;
+                let prim = ((inst_2.triangle_offset + first) + _e43);
+                let _e47 = best.t;
+                let _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
+                let _e51 = F32_INF;
+                if (_e48.x < bitcast<f32>(_e51)) {
+                    let _e60 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e60.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_6);
-                    if _e73 {
+                    let c_6 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0f));
+                    let _e75 = accept(inst_2, world_ray, c_6);
+                    if _e75 {
                         best = c_6;
                         if shadow {
-                            let _e74 = best;
-                            return _e74;
+                            let _e76 = best;
+                            return _e76;
                         }
                     }
                 }
                 continuing {
-                    let _e75 = k;
-                    k = (_e75 + 1u);
+                    let _e77 = k;
+                    k = (_e77 + 1u);
                 }
             }
         } else {
-            let _e78 = child;
-            let n_6 = nodes[(base_1 + _e78)];
-            let _e84 = best.t;
-            let _e85 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e84);
-            let tl = _e85.x;
-            let tr = _e85.y;
-            let _e89 = F32_INF;
-            let _e93 = F32_INF;
-            if ((tl < bitcast<f32>(_e89)) && (tr < bitcast<f32>(_e93))) {
+            let _e80 = child;
+            let n_6 = nodes[(base_1 + _e80)];
+            let _e86 = best.t;
+            let _e87 = children_entry(n_6, _e17, _e86);
+            let tl = _e87.x;
+            let tr = _e87.y;
+            let _e91 = F32_INF;
+            let _e95 = F32_INF;
+            if ((tl < bitcast<f32>(_e91)) && (tr < bitcast<f32>(_e95))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                let _e105 = sp_1;
-                if (_e105 < BLAS_STACK) {
-                    let _e109 = sp_1;
-                    let _e111 = far;
-                    traversal_stack[min((TLAS_STACK + _e109), 65u)] = _e111;
-                    let _e116 = sp_1;
-                    sp_1 = (_e116 + 1u);
+                let _e107 = sp_1;
+                if (_e107 < BLAS_STACK) {
+                    let _e111 = sp_1;
+                    let _e113 = far;
+                    traversal_stack[min((TLAS_STACK + _e111), 65u)] = _e113;
+                    let _e118 = sp_1;
+                    sp_1 = (_e118 + 1u);
                 }
-                let _e119 = near;
-                child = _e119;
+                let _e121 = near;
+                child = _e121;
                 continue;
             }
-            let _e121 = F32_INF;
-            if (tl < bitcast<f32>(_e121)) {
+            let _e123 = F32_INF;
+            if (tl < bitcast<f32>(_e123)) {
                 child = n_6.a;
                 continue;
             }
-            let _e126 = F32_INF;
-            if (tr < bitcast<f32>(_e126)) {
+            let _e128 = F32_INF;
+            if (tr < bitcast<f32>(_e128)) {
                 child = n_6.b;
                 continue;
             }
         }
-        let _e131 = sp_1;
-        let _e132 = pop(TLAS_STACK, _e131);
-        if (_e132.x == NO_HIT) {
+        let _e133 = sp_1;
+        let _e134 = pop(TLAS_STACK, _e133);
+        if (_e134.x == NO_HIT) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    let _e138 = best;
-    return _e138;
+    let _e140 = best;
+    return _e140;
 }
 
 fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
@@ -618,8 +634,8 @@ fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) 
     return best_1;
 }
 
-fn point_error(origin_3: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_5 = (abs(origin_3) + abs(along));
+fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_5 = (abs(origin_2) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -643,15 +659,15 @@ fn mesh_error(inst_4: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f
     let r2_ = abs(inst_4.object_to_world_2_);
     let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
-    let e = (rounding + carried);
-    return max(max(e.x, e.y), e.z);
+    let e_1 = (rounding + carried);
+    return max(max(e_1.x, e_1.y), e_1.z);
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n_1: vec3<f32>;
 
-    let e_1 = unpack2x16snorm(bits);
-    n_1 = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
+    let e_2 = unpack2x16snorm(bits);
+    n_1 = vec3<f32>(e_2.x, e_2.y, ((1f - abs(e_2.x)) - abs(e_2.y)));
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
@@ -685,14 +701,14 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e42 = load_triangle(c_1.primitive);
-        let b_6 = c_1.uv;
-        let w_2 = ((1f - b_6.x) - b_6.y);
+        let b_8 = c_1.uv;
+        let w_2 = ((1f - b_8.x) - b_8.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
-        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_6.x)) + (e2_ * vec3(b_6.y))));
+        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_8.x)) + (e2_ * vec3(b_8.y))));
         let _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_6.x)), (e2_ * vec3(b_6.y)), p_7);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_8.x)), (e2_ * vec3(b_8.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -700,7 +716,7 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
         let _e91 = decode_octahedral(a0_.x);
         let _e95 = decode_octahedral(a0_.y);
         let _e101 = decode_octahedral(a0_.z);
-        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_6.x))) + (_e101 * vec3(b_6.y)));
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_8.x))) + (_e101 * vec3(b_8.y)));
         let _e106 = n_shade;
         let _e107 = n_shade;
         if (dot(_e106, _e107) < 0.000000000001f) {
@@ -710,7 +726,7 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_6.x))) + (uv2_ * vec2(b_6.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_8.x))) + (uv2_ * vec2(b_8.y)));
         let _e135 = triangles[(c_1.primitive * 3u)];
         hit.primitive = bitcast<u32>(_e135.w);
     }
@@ -788,9 +804,25 @@ fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
     return _e18;
 }
 
-fn node_frame_hi(header: GpuNode) -> vec3<f32> {
-    let _e5 = node_point(header.min, header.max, vec3(65535u));
-    return _e5;
+fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
+    let tiny = vec3(0.000000000000000000000000000000000000011754944f);
+    let s_5 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_5 * tiny), (abs(d) < tiny));
+    return (vec3(1f) / dd);
+}
+
+fn slab(lo_1: vec3<f32>, hi_1: vec3<f32>, origin_3: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_4: f32) -> f32 {
+    let t0_1 = ((lo_1 - origin_3) * inv_dir);
+    let t1_1 = ((hi_1 - origin_3) * inv_dir);
+    let near_3 = min(t0_1, t1_1);
+    let far_3 = max(t0_1, t1_1);
+    let enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
+    let exit_1 = min((min(far_3.x, far_3.y) * 1.0000005f), min((far_3.z * 1.0000005f), tmax_4));
+    if (enter_1 <= exit_1) {
+        return enter_1;
+    }
+    let _e30 = F32_INF;
+    return bitcast<f32>(_e30);
 }
 
 fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
@@ -812,82 +844,84 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     let _e16 = safe_inverse(ray_8.dir);
     let base_2 = frame_3.tlas_root;
     let header_2 = nodes[base_2];
-    let origin_5 = header_2.min;
-    let scale_3 = header_2.max;
+    let origin_4 = header_2.min;
+    let scale_2 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
+    let _e28 = slab(origin_4, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
         return _e33;
     }
+    let _e34 = node_frame_hi(header_2);
+    let _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_8);
     sp_2 = 0u;
     child_1 = header_2.a;
     loop {
-        let _e38 = child_1;
-        if ((_e38 & NODE_LEAF_BIT) != 0u) {
-            let _e43 = child_1;
-            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                let _e52 = child_1;
-                let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
-                best_2 = _e56;
-                let _e58 = best_2.slot;
-                if (shadow_2 && (_e58 != NO_HIT)) {
-                    let _e62 = best_2;
-                    return _e62;
+        let _e41 = child_1;
+        if ((_e41 & NODE_LEAF_BIT) != 0u) {
+            let _e46 = child_1;
+            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e55 = child_1;
+                let _e58 = best_2;
+                let _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_8, _e58, shadow_2);
+                best_2 = _e59;
+                let _e61 = best_2.slot;
+                if (shadow_2 && (_e61 != NO_HIT)) {
+                    let _e65 = best_2;
+                    return _e65;
                 }
             }
         } else {
-            let _e63 = child_1;
-            let n_7 = nodes[(base_2 + _e63)];
-            let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69);
-            let tl_1 = _e70.x;
-            let tr_1 = _e70.y;
-            let _e74 = F32_INF;
-            let _e78 = F32_INF;
-            if ((tl_1 < bitcast<f32>(_e74)) && (tr_1 < bitcast<f32>(_e78))) {
+            let _e66 = child_1;
+            let n_7 = nodes[(base_2 + _e66)];
+            let _e72 = best_2.t;
+            let _e73 = children_entry(n_7, _e36, _e72);
+            let tl_1 = _e73.x;
+            let tr_1 = _e73.y;
+            let _e77 = F32_INF;
+            let _e81 = F32_INF;
+            if ((tl_1 < bitcast<f32>(_e77)) && (tr_1 < bitcast<f32>(_e81))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                let _e89 = sp_2;
-                if (_e89 < TLAS_STACK) {
-                    let _e92 = sp_2;
-                    let _e93 = far_1;
-                    traversal_stack[min(_e92, 65u)] = _e93;
-                    let _e98 = sp_2;
-                    sp_2 = (_e98 + 1u);
+                let _e92 = sp_2;
+                if (_e92 < TLAS_STACK) {
+                    let _e95 = sp_2;
+                    let _e96 = far_1;
+                    traversal_stack[min(_e95, 65u)] = _e96;
+                    let _e101 = sp_2;
+                    sp_2 = (_e101 + 1u);
                 }
-                let _e101 = near_1;
-                child_1 = _e101;
+                let _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            let _e103 = F32_INF;
-            if (tl_1 < bitcast<f32>(_e103)) {
+            let _e106 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e106)) {
                 child_1 = n_7.a;
                 continue;
             }
-            let _e108 = F32_INF;
-            if (tr_1 < bitcast<f32>(_e108)) {
+            let _e111 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e111)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        let _e113 = sp_2;
-        let _e114 = pop(0u, _e113);
-        if (_e114.x == NO_HIT) {
+        let _e116 = sp_2;
+        let _e117 = pop(0u, _e116);
+        if (_e117.x == NO_HIT) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    let _e120 = best_2;
-    return _e120;
+    let _e123 = best_2;
+    return _e123;
 }
 
 fn load_SkyGradient(offset_2: u32) -> SkyGradient {
@@ -903,13 +937,13 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_4: SkyGradient, ray_9: Ray) -> vec3<f32> {
+fn sky_gradient(b_6: SkyGradient, ray_9: Ray) -> vec3<f32> {
     let _e3 = normalize_vec3f(ray_9.dir);
     let y = _e3.y;
     if (y < 0f) {
-        return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4f), 1f)));
+        return mix(b_6.horizon, b_6.ground, vec3(min((-(y) * 4f), 1f)));
     }
-    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
+    return mix(b_6.horizon, b_6.zenith, vec3(sqrt(y)));
 }
 
 fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_10: Ray) -> vec3<f32> {
@@ -1031,16 +1065,16 @@ fn glass_rays(m_2: Glass, ray_18: Ray, hit_4: Hit) {
     let c_7 = min(dot(-(_e4), _e17), 1f);
     let _e21 = n_3;
     let _e22 = eta_1;
-    let t_5 = refract(_e4, _e21, _e22);
+    let t_6 = refract(_e4, _e21, _e22);
     let _e24 = eta_1;
     let _e25 = fresnel_dielectric(c_7, _e24);
-    if ((dot(t_5, t_5) == 0f) || (_e25 >= 1f)) {
+    if ((dot(t_6, t_6) == 0f) || (_e25 >= 1f)) {
         let _e32 = n_3;
         rt_spawn(reflect(_e4, _e32), m_2.tint);
     } else {
         let _e35 = n_3;
         rt_spawn(reflect(_e4, _e35), vec3(_e25));
-        rt_spawn(t_5, (m_2.tint * vec3((1f - _e25))));
+        rt_spawn(t_6, (m_2.tint * vec3((1f - _e25))));
     }
     return;
 }
@@ -1079,8 +1113,8 @@ fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
 }
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_9 = (n_4 * vec3(d_4));
+    let d_5 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_9 = (n_4 * vec3(d_5));
     let _e17 = step_toward((p_5 + offset_9), offset_9);
     return _e17;
 }

@@ -83,6 +83,13 @@ struct GpuNode {
     vec3 max_;
     uint b;
 };
+struct BoxRay {
+    vec3 step_;
+    vec3 start_lo;
+    vec3 start_hi;
+    float tmin;
+    float unit;
+};
 struct Triangle {
     vec3 v0_;
     vec3 v1_;
@@ -220,11 +227,11 @@ layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance 
 
 layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_12_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 float hit_error = 0.0;
 
-layout(std430, binding = 5) readonly buffer type_13_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 layout(std430, binding = 7) readonly buffer type_5_block_7Compute { uint _group_0_binding_7_cs[]; };
 
@@ -240,7 +247,7 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 8) buffer type_11_block_9Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_12_block_9Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -445,13 +452,6 @@ Ray to_object(GpuInstance inst, Ray ray) {
     return _e25;
 }
 
-vec3 safe_inverse(vec3 d) {
-    vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
-    return (vec3(1.0) / dd);
-}
-
 TriangleRay prepare_triangle_ray(Ray ray_1) {
     vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
     vec3 ad = abs(d_3);
@@ -468,17 +468,40 @@ TriangleRay prepare_triangle_ray(Ray ray_1) {
     return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
+vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
+    return (origin + (vec3(q) * scale));
+}
+
+vec3 node_frame_hi(GpuNode header) {
+    vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
+    return _e5;
+}
+
+BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+    float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
+    uint e = min(max(((floatBitsToUint(m_3) >> 23u) & 255u), 1u), 253u);
+    vec3 d_4 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
+    float unit = uintBitsToFloat((e << 23u));
+    vec3 floor_ = vec3(9.094947e-13);
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d_4, vec3(0.0)));
+    vec3 inv = (vec3(1.0) / mix(d_4, (s_3 * floor_), lessThan(abs(d_4), floor_)));
+    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 start = (rel * inv);
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
+    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
     vec3 a_5 = (_e8.xyz - r_1.origin);
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_6 = (_e18.xyz - r_1.origin);
+    vec3 b_8 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
     vec3 c_9 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
-    float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
-    float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
+    float bx = (b_8[min(r_1.kx, 2u)] - (r_1.shear.x * b_8[min(r_1.kz, 2u)]));
+    float by = (b_8[min(r_1.ky, 2u)] - (r_1.shear.y * b_8[min(r_1.kz, 2u)]));
     float cx = (c_9[min(r_1.kx, 2u)] - (r_1.shear.x * c_9[min(r_1.kz, 2u)]));
     float cy = (c_9[min(r_1.ky, 2u)] - (r_1.shear.y * c_9[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -487,7 +510,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0)));
     float det = ((u + v_3) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_9[min(r_1.kz, 2u)]))) * rcp);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_9[min(r_1.kz, 2u)]))) * rcp);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_13 ? vec3(t_6, (v_3 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -506,19 +529,19 @@ vec3 normal_to_world(GpuInstance inst_1, vec3 n) {
     return _e19;
 }
 
-bool single_sided_seen_front(Ray ray_2, bool front_face) {
-    return (front_face != (ray_2.kind == RAY_SHADOW));
+bool single_sided_seen_front(Ray ray_3, bool front_face) {
+    return (front_face != (ray_3.kind == RAY_SHADOW));
 }
 
-bool culled(GpuInstance inst_2, Ray ray_3, Candidate c) {
+bool culled(GpuInstance inst_2, Ray ray_4, Candidate c) {
     Triangle _e4 = load_triangle(c.primitive);
     vec3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    bool _e17 = single_sided_seen_front(ray_3, (dot(ray_3.dir, _e12) < 0.0));
+    bool _e17 = single_sided_seen_front(ray_4, (dot(ray_4.dir, _e12) < 0.0));
     return !(_e17);
 }
 
-float point_error(vec3 origin, vec3 along) {
-    vec3 a_6 = (abs(origin) + abs(along));
+float point_error(vec3 origin_2, vec3 along) {
+    vec3 a_6 = (abs(origin_2) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -535,14 +558,14 @@ float mesh_error(GpuInstance inst_4, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_1) {
     vec4 r2_ = abs(inst_4.object_to_world_2_);
     vec3 rounding = (vec3(GAMMA_4_) * vec3(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     vec3 carried = (vec3((1.0 + GAMMA_4_)) * vec3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
-    vec3 e = (rounding + carried);
-    return max(max(e.x, e.y), e.z);
+    vec3 e_1 = (rounding + carried);
+    return max(max(e_1.x, e_1.y), e_1.z);
 }
 
 vec3 decode_octahedral(uint bits) {
     vec3 n_1 = vec3(0.0);
-    vec2 e_1 = unpackSnorm2x16(bits);
-    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    vec2 e_2 = unpackSnorm2x16(bits);
+    n_1 = vec3(e_2.x, e_2.y, ((1.0 - abs(e_2.x)) - abs(e_2.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
@@ -557,26 +580,26 @@ vec3 decode_octahedral(uint bits) {
     return _e40;
 }
 
-Hit finish_hit(Ray ray_4, Candidate c_1) {
+Hit finish_hit(Ray ray_5, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_4.origin, (ray_4.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_5.origin, (ray_5.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_4.origin + (ray_4.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Triangle _e42 = load_triangle(c_1.primitive);
-        vec2 b_7 = c_1.uv;
-        float w_2 = ((1.0 - b_7.x) - b_7.y);
+        vec2 b_9 = c_1.uv;
+        float w_2 = ((1.0 - b_9.x) - b_9.y);
         vec3 e1_ = (_e42.v1_ - _e42.v0_);
         vec3 e2_ = (_e42.v2_ - _e42.v0_);
-        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
+        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_9.x)) + (e2_ * vec3(b_9.y))));
         vec3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_7);
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_9.x)), (e2_ * vec3(b_9.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -584,7 +607,7 @@ Hit finish_hit(Ray ray_4, Candidate c_1) {
         vec3 _e91 = decode_octahedral(a0_.x);
         vec3 _e95 = decode_octahedral(a0_.y);
         vec3 _e101 = decode_octahedral(a0_.z);
-        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_7.x))) + (_e101 * vec3(b_7.y)));
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_9.x))) + (_e101 * vec3(b_9.y)));
         vec3 _e106 = n_shade;
         vec3 _e107 = n_shade;
         if ((dot(_e106, _e107) < 1e-12)) {
@@ -594,7 +617,7 @@ Hit finish_hit(Ray ray_4, Candidate c_1) {
         vec2 uv0_ = unpackHalf2x16(a0_.w);
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_7.x))) + (uv2_ * vec2(b_7.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_9.x))) + (uv2_ * vec2(b_9.y)));
         vec4 _e135 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
         hit.primitive = floatBitsToUint(_e135.w);
     }
@@ -605,7 +628,7 @@ Hit finish_hit(Ray ray_4, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_4.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_5.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -697,11 +720,11 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
     int wi = int(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
-    int hi_1 = int(max(_e14, 1u));
+    int hi_2 = int(max(_e14, 1u));
     uint sampler_ = _group_0_binding_6_cs[(t_1 + 4u)];
     uint mu = (sampler_ & TEXTURE_WRAP_MASK);
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    vec2 q_3 = (uv * vec2(float(wi), float(hi_1)));
+    vec2 q_3 = (uv * vec2(float(wi), float(hi_2)));
     vec2 p_8 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
     vec2 f_2 = floor(p_8);
     vec2 fr = (p_8 - f_2);
@@ -709,7 +732,7 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     int _e49 = i32_from_f32_(f_2.y);
     ivec2 _e50 = wrap_texel_pair(_e47, wi, mu);
     uvec2 xs = uvec2(_e50);
-    ivec2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    ivec2 _e52 = wrap_texel_pair(_e49, hi_2, mv);
     uvec2 ys = uvec2(_e52);
     uint x0_ = xs.x;
     uint x1_ = xs.y;
@@ -720,8 +743,8 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     vec4 a_7 = mix(_e58, _e59, vec4(fr.x));
     vec4 _e63 = texel_at(t_1, x0_, y1_);
     vec4 _e64 = texel_at(t_1, x1_, y1_);
-    vec4 b_8 = mix(_e63, _e64, vec4(fr.x));
-    return mix(a_7, b_8, vec4(fr.y));
+    vec4 b_10 = mix(_e63, _e64, vec4(fr.x));
+    return mix(a_7, b_10, vec4(fr.y));
 }
 
 uint frame_index_query() {
@@ -737,13 +760,13 @@ uint gltf_pcg(uint x_5) {
     return ((word_1 >> 22u) ^ word_1);
 }
 
-float gltf_coverage(Ray ray_5, Hit hit_1) {
+float gltf_coverage(Ray ray_6, Hit hit_1) {
     uint h = 0u;
-    uvec3 o_1 = floatBitsToUint(ray_5.origin);
-    uvec3 d_4 = floatBitsToUint(ray_5.dir);
-    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
+    uvec3 o_1 = floatBitsToUint(ray_6.origin);
+    uvec3 d_5 = floatBitsToUint(ray_6.dir);
+    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_5.x * 3266489909u));
     uint _e20 = h;
-    h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    h = (((_e20 ^ (d_5.y * 668265263u)) ^ (d_5.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
     uint _e33 = h;
     uint _e38 = frame_index_query();
     h = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
@@ -755,36 +778,36 @@ float gltf_coverage(Ray ray_5, Hit hit_1) {
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_6, Hit hit_2) {
-    if (((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW)))) {
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_7, Hit hit_2) {
+    if (((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW)))) {
         return false;
     }
     if ((blend != 0u)) {
-        float _e17 = gltf_coverage(ray_6, hit_2);
+        float _e17 = gltf_coverage(ray_7, hit_2);
         return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_7, Hit hit_3) {
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_8, Hit hit_3) {
     vec4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_8, Hit hit_4) {
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_9, Hit hit_4) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_5, Ray ray_9, Candidate c_3) {
+bool accept(GpuInstance inst_5, Ray ray_10, Candidate c_3) {
     bool short_circuit = false;
     bool _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
     short_circuit = _e7;
     if (_e7) {
-        bool _e9 = culled(inst_5, ray_9, c_3);
+        bool _e9 = culled(inst_5, ray_10, c_3);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -793,9 +816,9 @@ bool accept(GpuInstance inst_5, Ray ray_9, Candidate c_3) {
     }
     if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e19 = finish_hit(ray_9, c_3);
+        Hit _e19 = finish_hit(ray_10, c_3);
         hit_error = shaded;
-        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19);
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19);
         return _e23;
     }
     return true;
@@ -805,42 +828,35 @@ uvec3 node_box_lo(uvec3 p_2) {
     return uvec3((p_2.x & 65535u), (p_2.x >> 16u), (p_2.y & 65535u));
 }
 
-vec3 node_point(vec3 origin_1, vec3 scale, uvec3 q) {
-    return (origin_1 + (vec3(q) * scale));
-}
-
 uvec3 node_box_hi(uvec3 p_3) {
     return uvec3((p_3.y >> 16u), (p_3.z & 65535u), (p_3.z >> 16u));
 }
 
-float slab(vec3 lo, vec3 hi, vec3 origin_2, vec3 inv_dir, float tmin_1, float tmax_2) {
-    vec3 t0_ = ((lo - origin_2) * inv_dir);
-    vec3 t1_ = ((hi - origin_2) * inv_dir);
+float slab_in_frame(vec3 lo, vec3 hi, BoxRay b_5, float tmax_2) {
+    vec3 t0_ = fma(lo, b_5.step_, b_5.start_lo);
+    vec3 t1_ = fma(hi, b_5.step_, b_5.start_hi);
     vec3 near_2 = min(t0_, t1_);
     vec3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
-    float exit = min((min(far_2.x, far_2.y) * 1.0000005), min((far_2.z * 1.0000005), tmax_2));
+    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_5.tmin));
+    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
     if ((enter <= exit)) {
         return enter;
     }
-    uint _e30 = F32_INF;
-    return uintBitsToFloat(_e30);
+    uint _e27 = F32_INF;
+    return uintBitsToFloat(_e27);
 }
 
-vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_10, vec3 inv, float tmax_3) {
+vec2 children_entry(GpuNode n_3, BoxRay b_6, float tmax_3) {
     uvec3 lq = floatBitsToUint(n_3.min_);
     uvec3 rq = floatBitsToUint(n_3.max_);
-    uvec3 _e10 = node_box_lo(lq);
-    vec3 _e11 = node_point(origin_3, scale_1, _e10);
-    uvec3 _e12 = node_box_hi(lq);
-    vec3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_10.origin, inv, ray_10.tmin, tmax_3);
-    uvec3 _e17 = node_box_lo(rq);
-    vec3 _e18 = node_point(origin_3, scale_1, _e17);
-    uvec3 _e19 = node_box_hi(rq);
-    vec3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_10.origin, inv, ray_10.tmin, tmax_3);
-    return vec2(_e16, _e23);
+    float t_7 = (tmax_3 * b_6.unit);
+    uvec3 _e9 = node_box_lo(lq);
+    uvec3 _e11 = node_box_hi(lq);
+    float _e13 = slab_in_frame(vec3(_e9), vec3(_e11), b_6, t_7);
+    uvec3 _e14 = node_box_lo(rq);
+    uvec3 _e16 = node_box_hi(rq);
+    float _e18 = slab_in_frame(vec3(_e14), vec3(_e16), b_6, t_7);
+    return vec2(_e13, _e18);
 }
 
 uvec2 pop(uint base, uint sp) {
@@ -859,102 +875,101 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_11.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_11);
+    TriangleRay _e7 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
-    vec3 origin_4 = header_1.min_;
-    vec3 scale_2 = header_1.max_;
+    vec3 _e14 = node_frame_hi(header_1);
+    BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_11);
     sp_1 = 0u;
     child = header_1.a;
     while(true) {
-        uint _e20 = child;
-        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
-            uint _e25 = child;
-            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e32 = child;
-            uint first = (_e32 & NODE_FIRST_MASK);
+        uint _e22 = child;
+        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
+            uint _e27 = child;
+            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e34 = child;
+            uint first = (_e34 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e75 = k;
-                    k = (_e75 + 1u);
+                    uint _e77 = k;
+                    k = (_e77 + 1u);
                 }
                 loop_init = false;
-                uint _e37 = k;
-                if ((_e37 >= count_1)) {
+                uint _e39 = k;
+                if ((_e39 >= count_1)) {
                     break;
                 }
-                uint _e41 = k;
-                uint prim = ((inst_6.triangle_offset + first) + _e41);
-                float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_11.tmin, _e45);
-                uint _e49 = F32_INF;
-                if ((_e46.x < uintBitsToFloat(_e49))) {
-                    vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e58.w);
+                uint _e43 = k;
+                uint prim = ((inst_6.triangle_offset + first) + _e43);
+                float _e47 = best.t;
+                vec3 _e48 = hit_triangle(_e7, prim, ray_11.tmin, _e47);
+                uint _e51 = F32_INF;
+                if ((_e48.x < uintBitsToFloat(_e51))) {
+                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e60.w);
                     uint owner = ((tag != 0u) ? ((inst_6.object + tag) - 1u) : slot_2);
-                    Candidate c_11 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
-                    bool _e73 = accept(inst_6, world_ray, c_11);
-                    if (_e73) {
+                    Candidate c_11 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
+                    bool _e75 = accept(inst_6, world_ray, c_11);
+                    if (_e75) {
                         best = c_11;
                         if (shadow) {
-                            Candidate _e74 = best;
-                            return _e74;
+                            Candidate _e76 = best;
+                            return _e76;
                         }
                     }
                 }
             }
         } else {
-            uint _e78 = child;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e78)];
-            float _e84 = best.t;
-            vec2 _e85 = children_entry(n_7, origin_4, scale_2, ray_11, _e8, _e84);
-            float tl = _e85.x;
-            float tr = _e85.y;
-            uint _e89 = F32_INF;
-            uint _e93 = F32_INF;
-            if (((tl < uintBitsToFloat(_e89)) && (tr < uintBitsToFloat(_e93)))) {
+            uint _e80 = child;
+            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e80)];
+            float _e86 = best.t;
+            vec2 _e87 = children_entry(n_7, _e17, _e86);
+            float tl = _e87.x;
+            float tr = _e87.y;
+            uint _e91 = F32_INF;
+            uint _e95 = F32_INF;
+            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
                 near = n_7.a;
                 far = n_7.b;
                 if (((tr < tl) != shadow)) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                uint _e105 = sp_1;
-                if ((_e105 < BLAS_STACK)) {
-                    uint _e109 = sp_1;
-                    uint _e111 = far;
-                    traversal_stack[min((TLAS_STACK + _e109), 127u)] = _e111;
-                    uint _e116 = sp_1;
-                    sp_1 = (_e116 + 1u);
+                uint _e107 = sp_1;
+                if ((_e107 < BLAS_STACK)) {
+                    uint _e111 = sp_1;
+                    uint _e113 = far;
+                    traversal_stack[min((TLAS_STACK + _e111), 127u)] = _e113;
+                    uint _e118 = sp_1;
+                    sp_1 = (_e118 + 1u);
                 }
-                uint _e119 = near;
-                child = _e119;
+                uint _e121 = near;
+                child = _e121;
                 continue;
             }
-            uint _e121 = F32_INF;
-            if ((tl < uintBitsToFloat(_e121))) {
+            uint _e123 = F32_INF;
+            if ((tl < uintBitsToFloat(_e123))) {
                 child = n_7.a;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tr < uintBitsToFloat(_e126))) {
+            uint _e128 = F32_INF;
+            if ((tr < uintBitsToFloat(_e128))) {
                 child = n_7.b;
                 continue;
             }
         }
-        uint _e131 = sp_1;
-        uvec2 _e132 = pop(TLAS_STACK, _e131);
-        if ((_e132.x == NO_HIT)) {
+        uint _e133 = sp_1;
+        uvec2 _e134 = pop(TLAS_STACK, _e133);
+        if ((_e134.x == NO_HIT)) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    Candidate _e138 = best;
-    return _e138;
+    Candidate _e140 = best;
+    return _e140;
 }
 
 Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shadow_1) {
@@ -1033,9 +1048,25 @@ Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
     return _e18;
 }
 
-vec3 node_frame_hi(GpuNode header) {
-    vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
-    return _e5;
+vec3 safe_inverse(vec3 d) {
+    vec3 tiny = vec3(1.1754944e-38);
+    vec3 s_5 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_5 * tiny), lessThan(abs(d), tiny));
+    return (vec3(1.0) / dd);
+}
+
+float slab(vec3 lo_1, vec3 hi_1, vec3 origin_3, vec3 inv_dir, float tmin_1, float tmax_4) {
+    vec3 t0_1 = ((lo_1 - origin_3) * inv_dir);
+    vec3 t1_1 = ((hi_1 - origin_3) * inv_dir);
+    vec3 near_3 = min(t0_1, t1_1);
+    vec3 far_3 = max(t0_1, t1_1);
+    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
+    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
+    if ((enter_1 <= exit_1)) {
+        return enter_1;
+    }
+    uint _e30 = F32_INF;
+    return uintBitsToFloat(_e30);
 }
 
 Candidate intersect_scene(Ray ray_14, bool shadow_2) {
@@ -1056,82 +1087,84 @@ Candidate intersect_scene(Ray ray_14, bool shadow_2) {
     vec3 _e16 = safe_inverse(ray_14.dir);
     uint base_3 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_3];
-    vec3 origin_5 = header_2.min_;
-    vec3 scale_3 = header_2.max_;
+    vec3 origin_4 = header_2.min_;
+    vec3 scale_2 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
+    float _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
         return _e33;
     }
+    vec3 _e34 = node_frame_hi(header_2);
+    BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_14);
     sp_2 = 0u;
     child_1 = header_2.a;
     while(true) {
-        uint _e38 = child_1;
-        if (((_e38 & NODE_LEAF_BIT) != 0u)) {
-            uint _e43 = child_1;
-            if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e52 = child_1;
-                Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_14, _e55, shadow_2);
-                best_2 = _e56;
-                uint _e58 = best_2.slot;
-                if ((shadow_2 && (_e58 != NO_HIT))) {
-                    Candidate _e62 = best_2;
-                    return _e62;
+        uint _e41 = child_1;
+        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
+            uint _e46 = child_1;
+            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e55 = child_1;
+                Candidate _e58 = best_2;
+                Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_14, _e58, shadow_2);
+                best_2 = _e59;
+                uint _e61 = best_2.slot;
+                if ((shadow_2 && (_e61 != NO_HIT))) {
+                    Candidate _e65 = best_2;
+                    return _e65;
                 }
             }
         } else {
-            uint _e63 = child_1;
-            GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e63)];
-            float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_14, _e16, _e69);
-            float tl_1 = _e70.x;
-            float tr_1 = _e70.y;
-            uint _e74 = F32_INF;
-            uint _e78 = F32_INF;
-            if (((tl_1 < uintBitsToFloat(_e74)) && (tr_1 < uintBitsToFloat(_e78)))) {
+            uint _e66 = child_1;
+            GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e66)];
+            float _e72 = best_2.t;
+            vec2 _e73 = children_entry(n_8, _e36, _e72);
+            float tl_1 = _e73.x;
+            float tr_1 = _e73.y;
+            uint _e77 = F32_INF;
+            uint _e81 = F32_INF;
+            if (((tl_1 < uintBitsToFloat(_e77)) && (tr_1 < uintBitsToFloat(_e81)))) {
                 near_1 = n_8.a;
                 far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_8.b;
                     far_1 = n_8.a;
                 }
-                uint _e89 = sp_2;
-                if ((_e89 < TLAS_STACK)) {
-                    uint _e92 = sp_2;
-                    uint _e93 = far_1;
-                    traversal_stack[min(_e92, 127u)] = _e93;
-                    uint _e98 = sp_2;
-                    sp_2 = (_e98 + 1u);
+                uint _e92 = sp_2;
+                if ((_e92 < TLAS_STACK)) {
+                    uint _e95 = sp_2;
+                    uint _e96 = far_1;
+                    traversal_stack[min(_e95, 127u)] = _e96;
+                    uint _e101 = sp_2;
+                    sp_2 = (_e101 + 1u);
                 }
-                uint _e101 = near_1;
-                child_1 = _e101;
+                uint _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            uint _e103 = F32_INF;
-            if ((tl_1 < uintBitsToFloat(_e103))) {
+            uint _e106 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e106))) {
                 child_1 = n_8.a;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((tr_1 < uintBitsToFloat(_e108))) {
+            uint _e111 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e111))) {
                 child_1 = n_8.b;
                 continue;
             }
         }
-        uint _e113 = sp_2;
-        uvec2 _e114 = pop(0u, _e113);
-        if ((_e114.x == NO_HIT)) {
+        uint _e116 = sp_2;
+        uvec2 _e117 = pop(0u, _e116);
+        if ((_e117.x == NO_HIT)) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    Candidate _e120 = best_2;
-    return _e120;
+    Candidate _e123 = best_2;
+    return _e123;
 }
 
 SkyGradient load_SkyGradient(uint offset_4) {
@@ -1147,13 +1180,13 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_5, Ray ray_15) {
+vec3 sky_gradient(SkyGradient b_7, Ray ray_15) {
     vec3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
-        return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4.0), 1.0)));
+        return mix(b_7.horizon, b_7.ground, vec3(min((-(y) * 4.0), 1.0)));
     }
-    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
+    return mix(b_7.horizon, b_7.zenith, vec3(sqrt(y)));
 }
 
 vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_16) {
@@ -1209,10 +1242,10 @@ float shadow_preset(vec3 normal, vec3 dir) {
 }
 
 void scratch_store3f(uint i_2, vec3 v_2) {
-    uvec3 b_9 = floatBitsToUint(v_2);
-    scratch[min(i_2, 24u)] = b_9.x;
-    scratch[min((i_2 + 1u), 24u)] = b_9.y;
-    scratch[min((i_2 + 2u), 24u)] = b_9.z;
+    uvec3 b_11 = floatBitsToUint(v_2);
+    scratch[min(i_2, 24u)] = b_11.x;
+    scratch[min((i_2 + 1u), 24u)] = b_11.y;
+    scratch[min((i_2 + 2u), 24u)] = b_11.z;
     return;
 }
 
@@ -1321,15 +1354,15 @@ vec3 step_toward(vec3 x_6, vec3 s) {
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
-    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    vec3 offset_13 = (n_4 * vec3(d_5));
+    float d_6 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_13 = (n_4 * vec3(d_6));
     vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position_4, vec3 normal_5, vec3 dir_2, float dist_1) {
     vec3 n_5 = vec3(0.0);
-    float tmax_4 = 0.0;
+    float tmax_5 = 0.0;
     n_5 = normal_5;
     vec3 _e5 = n_5;
     if ((dot(dir_2, _e5) < 0.0)) {
@@ -1342,16 +1375,16 @@ Ray shadow_ray(vec3 position_4, vec3 normal_5, vec3 dir_2, float dist_1) {
     vec3 _e22 = n_5;
     vec3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_4 = uintBitsToFloat(_e25);
+    tmax_5 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < uintBitsToFloat(_e29))) {
         vec3 light = (position_4 + (dir_2 * vec3(dist_1)));
         float dd_1 = dot(dir_2, dir_2);
         float along_1 = (dot((light - _e23), dir_2) / dd_1);
         vec3 l_2 = (abs(position_4) + abs((dir_2 * vec3(dist_1))));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
+        tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
-    float _e59 = tmax_4;
+    float _e59 = tmax_5;
     return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
@@ -1376,14 +1409,14 @@ LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_7) {
     uint entry = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = _group_0_binding_6_cs[entry];
     uint offset_14 = _group_0_binding_6_cs[(entry + 1u)];
-    uint start = rng_state;
-    after = start;
+    uint start_1 = rng_state;
+    after = start_1;
     resolved = 0u;
     bits_1 = 0u;
     scratch[min(SCRATCH_RESOLVED, 24u)] = 0u;
     scratch[min(SCRATCH_LIGHT_BITS, 24u)] = 0u;
     while(true) {
-        rng_state = start;
+        rng_state = start_1;
         scratch[min(SCRATCH_QUERY, 24u)] = 0u;
         scratch[min(SCRATCH_PENDING, 24u)] = 0u;
         LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_7);
@@ -1440,8 +1473,8 @@ vec3 pbr_fresnel(vec3 f0_, float c_4) {
 }
 
 float pbr_ggx_d(float ndh, float a2_) {
-    float d_6 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_6 * d_6));
+    float d_7 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_7 * d_7));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1) {

@@ -106,7 +106,15 @@ struct GpuNode {
     uint b;
 };
 typedef GpuNode type_10[1];
-typedef metal::float4 type_11[1];
+struct BoxRay {
+    metal::float3 step;
+    metal::float3 start_lo;
+    metal::packed_float3 start_hi;
+    float tmin;
+    float unit;
+    char _pad5[12];
+};
+typedef metal::float4 type_12[1];
 struct Triangle {
     metal::float3 v0_;
     metal::float3 v1_;
@@ -124,7 +132,7 @@ struct Hit {
     uint primitive;
     char _pad8[12];
 };
-typedef metal::uint4 type_13[1];
+typedef metal::uint4 type_14[1];
 struct GltfMaskedMaterial {
     metal::float4 base_color;
     uint base_texture;
@@ -542,15 +550,6 @@ Ray to_object(
     return _e25;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
-) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
@@ -569,25 +568,59 @@ TriangleRay prepare_triangle_ray(
     return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
+metal::float3 node_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::float3 node_frame_hi(
+    GpuNode header
+) {
+    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
+    return _e5;
+}
+
+BoxRay box_ray(
+    metal::float3 origin_1,
+    metal::float3 scale_1,
+    metal::float3 extent,
+    Ray ray_2
+) {
+    float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
+    uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
+    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    float unit = as_type<float>(e << 23u);
+    metal::float3 floor = metal::float3(0.0000000000009094947);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_3 * floor, metal::abs(d_4) < floor);
+    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 start = rel * inv;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_3;
+    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
 metal::float3 hit_triangle(
     TriangleRay r_1,
     uint slot,
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
     metal::float3 a_5 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_6 = _e18.xyz - r_1.origin;
+    metal::float3 b_8 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_9 = _e28.xyz - r_1.origin;
     float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
     float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
-    float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
-    float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
+    float bx = b_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_8[metal::min(r_1.kz, 2u)]);
+    float by = b_8[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_8[metal::min(r_1.kz, 2u)]);
     float cx = c_9[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_9[metal::min(r_1.kz, 2u)]);
     float cy = c_9[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_9[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -596,7 +629,7 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0));
     float det = (u + v_3) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_9[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_8[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_9[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_13 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -604,7 +637,7 @@ metal::float3 hit_triangle(
 
 Triangle load_triangle(
     uint slot_1,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_1 * 3u];
@@ -623,30 +656,30 @@ metal::float3 normal_to_world(
 }
 
 bool single_sided_seen_front(
-    Ray ray_2,
+    Ray ray_3,
     bool front_face
 ) {
-    return front_face != (ray_2.kind == RAY_SHADOW);
+    return front_face != (ray_3.kind == RAY_SHADOW);
 }
 
 bool culled(
     GpuInstance inst_2,
-    Ray ray_3,
+    Ray ray_4,
     Candidate c,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Triangle _e4 = load_triangle(c.primitive, triangles, _buffer_sizes);
     metal::float3 _e12 = normal_to_world(inst_2, metal::cross(_e4.v1_ - _e4.v0_, _e4.v2_ - _e4.v0_));
-    bool _e17 = single_sided_seen_front(ray_3, metal::dot(ray_3.dir, _e12) < 0.0);
+    bool _e17 = single_sided_seen_front(ray_4, metal::dot(ray_4.dir, _e12) < 0.0);
     return !(_e17);
 }
 
 float point_error(
-    metal::float3 origin,
+    metal::float3 origin_2,
     metal::float3 along
 ) {
-    metal::float3 a_6 = metal::abs(origin) + metal::abs(along);
+    metal::float3 a_6 = metal::abs(origin_2) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
@@ -672,16 +705,16 @@ float mesh_error(
     metal::float4 r2_ = metal::abs(inst_4.object_to_world_2_);
     metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
     metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
-    metal::float3 e = rounding + carried;
-    return metal::max(metal::max(e.x, e.y), e.z);
+    metal::float3 e_1 = rounding + carried;
+    return metal::max(metal::max(e_1.x, e_1.y), e_1.z);
 }
 
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n_1 = {};
-    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
-    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    metal::float2 e_2 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_2.x, e_2.y, (1.0 - metal::abs(e_2.x)) - metal::abs(e_2.y));
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
@@ -697,26 +730,26 @@ metal::float3 decode_octahedral(
 }
 
 Hit finish_hit(
-    Ray ray_4,
+    Ray ray_5,
     Candidate c_1,
     device type_9 const& instances,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_4.origin, ray_4.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_5.origin, ray_5.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_4.origin + (ray_4.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_5.origin + (ray_5.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Triangle _e42 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
-        metal::float2 b_7 = c_1.uv;
+        metal::float2 b_9 = c_1.uv;
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
@@ -752,7 +785,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_4.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_5.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -880,11 +913,11 @@ metal::float4 sample_texture(
     uint _e6 = params[t_1 + 1u];
     int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
-    int hi_1 = static_cast<int>(metal::max(_e14, 1u));
+    int hi_2 = static_cast<int>(metal::max(_e14, 1u));
     uint sampler = params[t_1 + 4u];
     uint mu = sampler & TEXTURE_WRAP_MASK;
     uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
-    metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
+    metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
     metal::float2 p_8 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_3) : (q_3 - metal::float2(0.5));
     metal::float2 f_2 = metal::floor(p_8);
     metal::float2 fr = p_8 - f_2;
@@ -892,7 +925,7 @@ metal::float4 sample_texture(
     int _e49 = i32_from_f32_(f_2.y);
     metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
     metal::uint2 xs = static_cast<metal::uint2>(_e50);
-    metal::int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_2, mv);
     metal::uint2 ys = static_cast<metal::uint2>(_e52);
     uint x0_ = xs.x;
     uint x1_ = xs.y;
@@ -903,8 +936,8 @@ metal::float4 sample_texture(
     metal::float4 a_7 = metal::mix(_e58, _e59, metal::float4(fr.x));
     metal::float4 _e63 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
     metal::float4 _e64 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e63, _e64, metal::float4(fr.x));
-    return metal::mix(a_7, b_8, metal::float4(fr.y));
+    metal::float4 b_10 = metal::mix(_e63, _e64, metal::float4(fr.x));
+    return metal::mix(a_7, b_10, metal::float4(fr.y));
 }
 
 uint frame_index_query(
@@ -926,17 +959,17 @@ uint gltf_pcg(
 }
 
 float gltf_coverage(
-    Ray ray_5,
+    Ray ray_6,
     Hit hit_1,
     constant FrameUniforms& frame,
     thread type_4& scratch
 ) {
     uint h = {};
-    metal::uint3 o_1 = as_type<metal::uint3>(ray_5.origin);
-    metal::uint3 d_4 = as_type<metal::uint3>(ray_5.dir);
-    h = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u);
+    metal::uint3 o_1 = as_type<metal::uint3>(ray_6.origin);
+    metal::uint3 d_5 = as_type<metal::uint3>(ray_6.dir);
+    h = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_5.x * 3266489909u);
     uint _e20 = h;
-    h = ((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
+    h = ((_e20 ^ (d_5.y * 668265263u)) ^ (d_5.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
     uint _e33 = h;
     uint _e38 = frame_index_query(frame, scratch);
     h = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
@@ -953,16 +986,16 @@ bool gltf_counts(
     float cutoff,
     uint blend,
     uint double_sided,
-    Ray ray_6,
+    Ray ray_7,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch
 ) {
-    if ((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW))) {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        float _e17 = gltf_coverage(ray_6, hit_2, frame, scratch);
+        float _e17 = gltf_coverage(ray_7, hit_2, frame, scratch);
         return _e17 < alpha;
     }
     return alpha >= cutoff;
@@ -970,7 +1003,7 @@ bool gltf_counts(
 
 bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
-    Ray ray_7,
+    Ray ray_8,
     Hit hit_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -980,14 +1013,14 @@ bool gltf_masked_any_hit(
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
     float alpha_1 = m.base_color.w * _e7.w;
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3, frame, scratch);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3, frame, scratch);
     return _e13;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_8,
+    Ray ray_9,
     Hit hit_4,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -996,21 +1029,21 @@ bool dispatch_any_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4, frame, scratch, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4, frame, scratch, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_5,
-    Ray ray_9,
+    Ray ray_10,
     Candidate c_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
     device type_5 const& params,
     device type_9 const& instances,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1018,7 +1051,7 @@ bool accept(
     bool _e7 = (inst_5.flags & FLAG_CULL_BACK) != 0u;
     short_circuit = _e7;
     if (_e7) {
-        bool _e9 = culled(inst_5, ray_9, c_3, triangles, _buffer_sizes);
+        bool _e9 = culled(inst_5, ray_10, c_3, triangles, _buffer_sizes);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -1027,9 +1060,9 @@ bool accept(
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e19 = finish_hit(ray_9, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e19 = finish_hit(ray_10, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19, frame, scratch, params, texels, _buffer_sizes);
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19, frame, scratch, params, texels, _buffer_sizes);
         return _e23;
     }
     return true;
@@ -1041,64 +1074,48 @@ metal::uint3 node_box_lo(
     return metal::uint3(p_2.x & 65535u, p_2.x >> 16u, p_2.y & 65535u);
 }
 
-metal::float3 node_point(
-    metal::float3 origin_1,
-    metal::float3 scale,
-    metal::uint3 q
-) {
-    return origin_1 + (static_cast<metal::float3>(q) * scale);
-}
-
 metal::uint3 node_box_hi(
     metal::uint3 p_3
 ) {
     return metal::uint3(p_3.y >> 16u, p_3.z & 65535u, p_3.z >> 16u);
 }
 
-float slab(
+float slab_in_frame(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin_2,
-    metal::float3 inv_dir,
-    float tmin_1,
+    BoxRay b_5,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin_2) * inv_dir;
-    metal::float3 t1_ = (hi - origin_2) * inv_dir;
+    metal::float3 t0_ = metal::fma(lo, b_5.step, b_5.start_lo);
+    metal::float3 t1_ = metal::fma(hi, b_5.step, b_5.start_hi);
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
-    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
-    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, b_5.tmin));
+    float exit = metal::min(metal::min(far_2.x, far_2.y), metal::min(far_2.z, tmax_2));
     if (enter <= exit) {
         return enter;
     }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    uint _e27 = F32_INF;
+    return as_type<float>(_e27);
 }
 
 metal::float2 children_entry(
     GpuNode n_3,
-    metal::float3 origin_3,
-    metal::float3 scale_1,
-    Ray ray_10,
-    metal::float3 inv,
+    BoxRay b_6,
     float tmax_3,
     thread uint& F32_INF
 ) {
     metal::uint3 lq = as_type<metal::uint3>(n_3.min);
     metal::uint3 rq = as_type<metal::uint3>(n_3.max);
-    metal::uint3 _e10 = node_box_lo(lq);
-    metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
-    metal::uint3 _e12 = node_box_hi(lq);
-    metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_10.origin, inv, ray_10.tmin, tmax_3, F32_INF);
-    metal::uint3 _e17 = node_box_lo(rq);
-    metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
-    metal::uint3 _e19 = node_box_hi(rq);
-    metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_10.origin, inv, ray_10.tmin, tmax_3, F32_INF);
-    return metal::float2(_e16, _e23);
+    float t_7 = tmax_3 * b_6.unit;
+    metal::uint3 _e9 = node_box_lo(lq);
+    metal::uint3 _e11 = node_box_hi(lq);
+    float _e13 = slab_in_frame(static_cast<metal::float3>(_e9), static_cast<metal::float3>(_e11), b_6, t_7, F32_INF);
+    metal::uint3 _e14 = node_box_lo(rq);
+    metal::uint3 _e16 = node_box_hi(rq);
+    float _e18 = slab_in_frame(static_cast<metal::float3>(_e14), static_cast<metal::float3>(_e16), b_6, t_7, F32_INF);
+    return metal::float2(_e13, _e18);
 }
 
 metal::uint2 pop(
@@ -1126,9 +1143,9 @@ Candidate intersect_mesh(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
@@ -1140,24 +1157,23 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_11.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_11);
+    TriangleRay _e7 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_1 = nodes[base_2];
-    metal::float3 origin_4 = header_1.min;
-    metal::float3 scale_2 = header_1.max;
+    metal::float3 _e14 = node_frame_hi(header_1);
+    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_11);
     sp_1 = 0u;
     child = header_1.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e20 = child;
-        if ((_e20 & NODE_LEAF_BIT) != 0u) {
-            uint _e25 = child;
-            uint count_1 = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e32 = child;
-            uint first = _e32 & NODE_FIRST_MASK;
+        uint _e22 = child;
+        if ((_e22 & NODE_LEAF_BIT) != 0u) {
+            uint _e27 = child;
+            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e34 = child;
+            uint first = _e34 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -1165,83 +1181,83 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e75 = k;
-                    k = _e75 + 1u;
+                    uint _e77 = k;
+                    k = _e77 + 1u;
                 }
                 loop_init = false;
-                uint _e37 = k;
-                if (_e37 >= count_1) {
+                uint _e39 = k;
+                if (_e39 >= count_1) {
                     break;
                 }
-                uint _e41 = k;
-                uint prim = (inst_6.triangle_offset + first) + _e41;
-                float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_11.tmin, _e45, F32_INF, triangles, _buffer_sizes);
-                uint _e49 = F32_INF;
-                if (_e46.x < as_type<float>(_e49)) {
-                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e58.w);
+                uint _e43 = k;
+                uint prim = (inst_6.triangle_offset + first) + _e43;
+                float _e47 = best.t;
+                metal::float3 _e48 = hit_triangle(_e7, prim, ray_11.tmin, _e47, F32_INF, triangles, _buffer_sizes);
+                uint _e51 = F32_INF;
+                if (_e48.x < as_type<float>(_e51)) {
+                    metal::float4 _e60 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e60.w);
                     uint owner = (tag != 0u) ? ((inst_6.object + tag) - 1u) : slot_2;
-                    Candidate c_11 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_6, world_ray, c_11, frame, scratch, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
-                    if (_e73) {
+                    Candidate c_11 = Candidate {_e48.x, owner, prim, {}, _e48.yz, {}, metal::float3(0.0)};
+                    bool _e75 = accept(inst_6, world_ray, c_11, frame, scratch, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
+                    if (_e75) {
                         best = c_11;
                         if (shadow) {
-                            Candidate _e74 = best;
-                            return _e74;
+                            Candidate _e76 = best;
+                            return _e76;
                         }
                     }
                 }
             }
         } else {
-            uint _e78 = child;
-            GpuNode n_7 = nodes[base_2 + _e78];
-            float _e84 = best.t;
-            metal::float2 _e85 = children_entry(n_7, origin_4, scale_2, ray_11, _e8, _e84, F32_INF);
-            float tl = _e85.x;
-            float tr = _e85.y;
-            uint _e89 = F32_INF;
-            uint _e93 = F32_INF;
-            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
+            uint _e80 = child;
+            GpuNode n_7 = nodes[base_2 + _e80];
+            float _e86 = best.t;
+            metal::float2 _e87 = children_entry(n_7, _e17, _e86, F32_INF);
+            float tl = _e87.x;
+            float tr = _e87.y;
+            uint _e91 = F32_INF;
+            uint _e95 = F32_INF;
+            if ((tl < as_type<float>(_e91)) && (tr < as_type<float>(_e95))) {
                 near = n_7.a;
                 far = n_7.b;
                 if ((tr < tl) != shadow) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                uint _e105 = sp_1;
-                if (_e105 < BLAS_STACK) {
-                    uint _e109 = sp_1;
-                    uint _e111 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 127u)] = _e111;
-                    uint _e116 = sp_1;
-                    sp_1 = _e116 + 1u;
+                uint _e107 = sp_1;
+                if (_e107 < BLAS_STACK) {
+                    uint _e111 = sp_1;
+                    uint _e113 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e111, 127u)] = _e113;
+                    uint _e118 = sp_1;
+                    sp_1 = _e118 + 1u;
                 }
-                uint _e119 = near;
-                child = _e119;
+                uint _e121 = near;
+                child = _e121;
                 continue;
             }
-            uint _e121 = F32_INF;
-            if (tl < as_type<float>(_e121)) {
+            uint _e123 = F32_INF;
+            if (tl < as_type<float>(_e123)) {
                 child = n_7.a;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tr < as_type<float>(_e126)) {
+            uint _e128 = F32_INF;
+            if (tr < as_type<float>(_e128)) {
                 child = n_7.b;
                 continue;
             }
         }
-        uint _e131 = sp_1;
-        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
-        if (_e132.x == NO_HIT) {
+        uint _e133 = sp_1;
+        metal::uint2 _e134 = pop(TLAS_STACK, _e133, traversal_stack);
+        if (_e134.x == NO_HIT) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    Candidate _e138 = best;
-    return _e138;
+    Candidate _e140 = best;
+    return _e140;
 }
 
 Candidate intersect_object(
@@ -1255,9 +1271,9 @@ Candidate intersect_object(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
@@ -1284,9 +1300,9 @@ uint medium_at(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
@@ -1351,9 +1367,9 @@ Ray sample_camera_ray(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
@@ -1372,11 +1388,35 @@ Ray sample_camera_ray(
     return _e18;
 }
 
-metal::float3 node_frame_hi(
-    GpuNode header
+metal::float3 safe_inverse(
+    metal::float3 d
 ) {
-    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
-    return _e5;
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_5 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_5 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+float slab(
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::float3 origin_3,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_4,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_1 = (lo_1 - origin_3) * inv_dir;
+    metal::float3 t1_1 = (hi_1 - origin_3) * inv_dir;
+    metal::float3 near_3 = metal::min(t0_1, t1_1);
+    metal::float3 far_3 = metal::max(t0_1, t1_1);
+    float enter_1 = metal::max(metal::max(near_3.x, near_3.y), metal::max(near_3.z, tmin_1));
+    float exit_1 = metal::min(metal::min(far_3.x, far_3.y) * 1.0000005, metal::min(far_3.z * 1.0000005, tmax_4));
+    if (enter_1 <= exit_1) {
+        return enter_1;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
 }
 
 Candidate intersect_scene(
@@ -1388,9 +1428,9 @@ Candidate intersect_scene(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -1413,85 +1453,87 @@ Candidate intersect_scene(
     metal::float3 _e16 = safe_inverse(ray_14.dir);
     uint base_3 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_3];
-    metal::float3 origin_5 = header_2.min;
-    metal::float3 scale_3 = header_2.max;
+    metal::float3 origin_4 = header_2.min;
+    metal::float3 scale_2 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_14.origin, _e16, ray_14.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
         return _e33;
     }
+    metal::float3 _e34 = node_frame_hi(header_2);
+    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_14);
     sp_2 = 0u;
     child_1 = header_2.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e38 = child_1;
-        if ((_e38 & NODE_LEAF_BIT) != 0u) {
-            uint _e43 = child_1;
-            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e52 = child_1;
-                Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_14, _e55, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-                best_2 = _e56;
-                uint _e58 = best_2.slot;
-                if (shadow_2 && (_e58 != NO_HIT)) {
-                    Candidate _e62 = best_2;
-                    return _e62;
+        uint _e41 = child_1;
+        if ((_e41 & NODE_LEAF_BIT) != 0u) {
+            uint _e46 = child_1;
+            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e55 = child_1;
+                Candidate _e58 = best_2;
+                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_14, _e58, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                best_2 = _e59;
+                uint _e61 = best_2.slot;
+                if (shadow_2 && (_e61 != NO_HIT)) {
+                    Candidate _e65 = best_2;
+                    return _e65;
                 }
             }
         } else {
-            uint _e63 = child_1;
-            GpuNode n_8 = nodes[base_3 + _e63];
-            float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_14, _e16, _e69, F32_INF);
-            float tl_1 = _e70.x;
-            float tr_1 = _e70.y;
-            uint _e74 = F32_INF;
-            uint _e78 = F32_INF;
-            if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
+            uint _e66 = child_1;
+            GpuNode n_8 = nodes[base_3 + _e66];
+            float _e72 = best_2.t;
+            metal::float2 _e73 = children_entry(n_8, _e36, _e72, F32_INF);
+            float tl_1 = _e73.x;
+            float tr_1 = _e73.y;
+            uint _e77 = F32_INF;
+            uint _e81 = F32_INF;
+            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
                 near_1 = n_8.a;
                 far_1 = n_8.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_8.b;
                     far_1 = n_8.a;
                 }
-                uint _e89 = sp_2;
-                if (_e89 < TLAS_STACK) {
-                    uint _e92 = sp_2;
-                    uint _e93 = far_1;
-                    traversal_stack.inner[metal::min(_e92, 127u)] = _e93;
-                    uint _e98 = sp_2;
-                    sp_2 = _e98 + 1u;
+                uint _e92 = sp_2;
+                if (_e92 < TLAS_STACK) {
+                    uint _e95 = sp_2;
+                    uint _e96 = far_1;
+                    traversal_stack.inner[metal::min(_e95, 127u)] = _e96;
+                    uint _e101 = sp_2;
+                    sp_2 = _e101 + 1u;
                 }
-                uint _e101 = near_1;
-                child_1 = _e101;
+                uint _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            uint _e103 = F32_INF;
-            if (tl_1 < as_type<float>(_e103)) {
+            uint _e106 = F32_INF;
+            if (tl_1 < as_type<float>(_e106)) {
                 child_1 = n_8.a;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if (tr_1 < as_type<float>(_e108)) {
+            uint _e111 = F32_INF;
+            if (tr_1 < as_type<float>(_e111)) {
                 child_1 = n_8.b;
                 continue;
             }
         }
-        uint _e113 = sp_2;
-        metal::uint2 _e114 = pop(0u, _e113, traversal_stack);
-        if (_e114.x == NO_HIT) {
+        uint _e116 = sp_2;
+        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
+        if (_e117.x == NO_HIT) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    Candidate _e120 = best_2;
-    return _e120;
+    Candidate _e123 = best_2;
+    return _e123;
 }
 
 SkyGradient load_SkyGradient(
@@ -1512,15 +1554,15 @@ SkyGradient load_SkyGradient(
 }
 
 metal::float3 sky_gradient(
-    SkyGradient b_5,
+    SkyGradient b_7,
     Ray ray_15
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if (y < 0.0) {
-        return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
+        return metal::mix(b_7.horizon, b_7.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
     }
-    return metal::mix(b_5.horizon, b_5.zenith, metal::float3(metal::sqrt(y)));
+    return metal::mix(b_7.horizon, b_7.zenith, metal::float3(metal::sqrt(y)));
 }
 
 metal::float3 dispatch_miss(
@@ -1606,10 +1648,10 @@ void scratch_store3f(
     metal::float3 v_2,
     thread type_4& scratch
 ) {
-    metal::uint3 b_9 = as_type<metal::uint3>(v_2);
-    scratch.inner[metal::min(i_2, 24u)] = b_9.x;
-    scratch.inner[metal::min(i_2 + 1u, 24u)] = b_9.y;
-    scratch.inner[metal::min(i_2 + 2u, 24u)] = b_9.z;
+    metal::uint3 b_11 = as_type<metal::uint3>(v_2);
+    scratch.inner[metal::min(i_2, 24u)] = b_11.x;
+    scratch.inner[metal::min(i_2 + 1u, 24u)] = b_11.y;
+    scratch.inner[metal::min(i_2 + 2u, 24u)] = b_11.z;
     return;
 }
 
@@ -1765,8 +1807,8 @@ metal::float3 offset_origin(
     metal::float3 n_4,
     float error
 ) {
-    float d_5 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_13 = n_4 * metal::float3(d_5);
+    float d_6 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_13 = n_4 * metal::float3(d_6);
     metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
     return _e17;
 }
@@ -1780,7 +1822,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_5 = {};
-    float tmax_4 = {};
+    float tmax_5 = {};
     n_5 = normal_5;
     metal::float3 _e5 = n_5;
     if (metal::dot(dir_2, _e5) < 0.0) {
@@ -1793,16 +1835,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_5;
     metal::float3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_4 = as_type<float>(_e25);
+    tmax_5 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist_1 < as_type<float>(_e29)) {
         metal::float3 light = position_4 + (dir_2 * metal::float3(dist_1));
         float dd_1 = metal::dot(dir_2, dir_2);
         float along_1 = metal::dot(light - _e23, dir_2) / dd_1;
         metal::float3 l_2 = metal::abs(position_4) + metal::abs(dir_2 * metal::float3(dist_1));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
+        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
     }
-    float _e59 = tmax_4;
+    float _e59 = tmax_5;
     return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -1817,9 +1859,9 @@ float shadow_query(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -1845,9 +1887,9 @@ LightSample sample_light_deferred(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -1864,8 +1906,8 @@ LightSample sample_light_deferred(
     uint entry = frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry];
     uint offset_14 = params[entry + 1u];
-    uint start = rng_state;
-    after = start;
+    uint start_1 = rng_state;
+    after = start_1;
     resolved = 0u;
     bits_1 = 0u;
     scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)] = 0u;
@@ -1874,7 +1916,7 @@ LightSample sample_light_deferred(
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        rng_state = start;
+        rng_state = start_1;
         scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = 0u;
         scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 0u;
         LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_7, scratch, params, F32_INF, counters, _buffer_sizes);
@@ -1937,8 +1979,8 @@ float pbr_ggx_d(
     float ndh,
     float a2_
 ) {
-    float d_6 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-    return (a2_ * INV_PI) / (d_6 * d_6);
+    float d_7 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_7 * d_7);
 }
 
 float pbr_smith_v(
@@ -1966,9 +2008,9 @@ metal::float3 gltf_radiance(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2028,9 +2070,9 @@ metal::float3 gltf_masked_shade(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2072,9 +2114,9 @@ metal::float3 gltf_shade(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2100,9 +2142,9 @@ metal::float3 dispatch_closest_hit(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2137,9 +2179,9 @@ metal::float3 shade_direct(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2228,9 +2270,9 @@ metal::float3 trace(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2483,7 +2525,7 @@ PassSum add_sample(
     uint per_pass,
     thread uint& ray_count,
     device type_19& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PassSum next = {};
@@ -2534,9 +2576,9 @@ void render_pixel(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2544,7 +2586,7 @@ void render_pixel(
     thread type_20& spawn_dirs,
     thread type_20& spawn_weights,
     thread uint& spawn_count,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PassSum sums = {};
@@ -2592,9 +2634,9 @@ void render_invocation(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
-    device type_13 const& attributes,
+    device type_14 const& attributes,
     device type_5 const& texels,
     thread type_17& traversal_stack,
     thread uint& ray_count,
@@ -2602,7 +2644,7 @@ void render_invocation(
     thread type_20& spawn_dirs,
     thread type_20& spawn_weights,
     thread uint& spawn_count,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2623,11 +2665,11 @@ struct renderInput {
 , device type_5 const& params [[buffer(6)]]
 , device type_9 const& instances [[buffer(3)]]
 , device type_10 const& nodes [[buffer(2)]]
-, device type_11 const& triangles [[buffer(4)]]
-, device type_13 const& attributes [[buffer(5)]]
+, device type_12 const& triangles [[buffer(4)]]
+, device type_14 const& attributes [[buffer(5)]]
 , device type_5 const& texels [[buffer(7)]]
 , device type_19& counters [[buffer(9)]]
-, device type_11& accum [[buffer(8)]]
+, device type_12& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     type_4 scratch = {};

@@ -89,6 +89,13 @@ struct GpuNode {
     vec3 max_;
     uint b;
 };
+struct BoxRay {
+    vec3 step_;
+    vec3 start_lo;
+    vec3 start_hi;
+    float tmin;
+    float unit;
+};
 struct Hit {
     vec3 position;
     float t;
@@ -179,7 +186,7 @@ layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance 
 
 layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_12_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 uint traversal_stack[65] = uint[65](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
@@ -197,7 +204,7 @@ uint spawn_count = 0u;
 
 layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430, binding = 8) buffer type_11_block_8Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_12_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -402,13 +409,6 @@ Ray to_object(GpuInstance inst, Ray ray) {
     return _e25;
 }
 
-vec3 safe_inverse(vec3 d) {
-    vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
-    return (vec3(1.0) / dd);
-}
-
 TriangleRay prepare_triangle_ray(Ray ray_1) {
     vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
     vec3 ad = abs(d_3);
@@ -425,17 +425,40 @@ TriangleRay prepare_triangle_ray(Ray ray_1) {
     return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
+vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
+    return (origin + (vec3(q) * scale));
+}
+
+vec3 node_frame_hi(GpuNode header) {
+    vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
+    return _e5;
+}
+
+BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+    float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
+    uint e = min(max(((floatBitsToUint(m_3) >> 23u) & 255u), 1u), 253u);
+    vec3 d_4 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
+    float unit = uintBitsToFloat((e << 23u));
+    vec3 floor_ = vec3(9.094947e-13);
+    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d_4, vec3(0.0)));
+    vec3 inv = (vec3(1.0) / mix(d_4, (s_4 * floor_), lessThan(abs(d_4), floor_)));
+    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 start = (rel * inv);
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
+    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
     vec3 a_4 = (_e8.xyz - r_1.origin);
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_5 = (_e18.xyz - r_1.origin);
+    vec3 b_7 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
     vec3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
-    float bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
-    float by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
+    float bx = (b_7[min(r_1.kx, 2u)] - (r_1.shear.x * b_7[min(r_1.kz, 2u)]));
+    float by = (b_7[min(r_1.ky, 2u)] - (r_1.shear.y * b_7[min(r_1.kz, 2u)]));
     float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -444,13 +467,13 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_8 ? vec3(t, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
     return true;
 }
 
@@ -458,42 +481,35 @@ uvec3 node_box_lo(uvec3 p) {
     return uvec3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
-    return (origin + (vec3(q) * scale));
-}
-
 uvec3 node_box_hi(uvec3 p_1) {
     return uvec3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
-float slab(vec3 lo, vec3 hi, vec3 origin_1, vec3 inv_dir, float tmin_1, float tmax_2) {
-    vec3 t0_ = ((lo - origin_1) * inv_dir);
-    vec3 t1_ = ((hi - origin_1) * inv_dir);
+float slab_in_frame(vec3 lo, vec3 hi, BoxRay b_4, float tmax_2) {
+    vec3 t0_ = fma(lo, b_4.step_, b_4.start_lo);
+    vec3 t1_ = fma(hi, b_4.step_, b_4.start_hi);
     vec3 near_2 = min(t0_, t1_);
     vec3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
-    float exit = min((min(far_2.x, far_2.y) * 1.0000005), min((far_2.z * 1.0000005), tmax_2));
+    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
+    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
     if ((enter <= exit)) {
         return enter;
     }
-    uint _e30 = F32_INF;
-    return uintBitsToFloat(_e30);
+    uint _e27 = F32_INF;
+    return uintBitsToFloat(_e27);
 }
 
-vec2 children_entry(GpuNode n, vec3 origin_2, vec3 scale_1, Ray ray_3, vec3 inv, float tmax_3) {
+vec2 children_entry(GpuNode n, BoxRay b_5, float tmax_3) {
     uvec3 lq = floatBitsToUint(n.min_);
     uvec3 rq = floatBitsToUint(n.max_);
-    uvec3 _e10 = node_box_lo(lq);
-    vec3 _e11 = node_point(origin_2, scale_1, _e10);
-    uvec3 _e12 = node_box_hi(lq);
-    vec3 _e13 = node_point(origin_2, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
-    uvec3 _e17 = node_box_lo(rq);
-    vec3 _e18 = node_point(origin_2, scale_1, _e17);
-    uvec3 _e19 = node_box_hi(rq);
-    vec3 _e20 = node_point(origin_2, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
-    return vec2(_e16, _e23);
+    float t_1 = (tmax_3 * b_5.unit);
+    uvec3 _e9 = node_box_lo(lq);
+    uvec3 _e11 = node_box_hi(lq);
+    float _e13 = slab_in_frame(vec3(_e9), vec3(_e11), b_5, t_1);
+    uvec3 _e14 = node_box_lo(rq);
+    uvec3 _e16 = node_box_hi(rq);
+    float _e18 = slab_in_frame(vec3(_e14), vec3(_e16), b_5, t_1);
+    return vec2(_e13, _e18);
 }
 
 uvec2 pop(uint base, uint sp) {
@@ -512,102 +528,101 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_4.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_1];
-    vec3 origin_4 = header_1.min_;
-    vec3 scale_2 = header_1.max_;
+    vec3 _e14 = node_frame_hi(header_1);
+    BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
     sp_1 = 0u;
     child = header_1.a;
     while(true) {
-        uint _e20 = child;
-        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
-            uint _e25 = child;
-            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e32 = child;
-            uint first = (_e32 & NODE_FIRST_MASK);
+        uint _e22 = child;
+        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
+            uint _e27 = child;
+            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e34 = child;
+            uint first = (_e34 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e75 = k;
-                    k = (_e75 + 1u);
+                    uint _e77 = k;
+                    k = (_e77 + 1u);
                 }
                 loop_init = false;
-                uint _e37 = k;
-                if ((_e37 >= count_1)) {
+                uint _e39 = k;
+                if ((_e39 >= count_1)) {
                     break;
                 }
-                uint _e41 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e41);
-                float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
-                uint _e49 = F32_INF;
-                if ((_e46.x < uintBitsToFloat(_e49))) {
-                    vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e58.w);
+                uint _e43 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e43);
+                float _e47 = best.t;
+                vec3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
+                uint _e51 = F32_INF;
+                if ((_e48.x < uintBitsToFloat(_e51))) {
+                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e60.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
-                    bool _e73 = accept(inst_2, world_ray, c_6);
-                    if (_e73) {
+                    Candidate c_6 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
+                    bool _e75 = accept(inst_2, world_ray, c_6);
+                    if (_e75) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e74 = best;
-                            return _e74;
+                            Candidate _e76 = best;
+                            return _e76;
                         }
                     }
                 }
             }
         } else {
-            uint _e78 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e78)];
-            float _e84 = best.t;
-            vec2 _e85 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e84);
-            float tl = _e85.x;
-            float tr = _e85.y;
-            uint _e89 = F32_INF;
-            uint _e93 = F32_INF;
-            if (((tl < uintBitsToFloat(_e89)) && (tr < uintBitsToFloat(_e93)))) {
+            uint _e80 = child;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e80)];
+            float _e86 = best.t;
+            vec2 _e87 = children_entry(n_6, _e17, _e86);
+            float tl = _e87.x;
+            float tr = _e87.y;
+            uint _e91 = F32_INF;
+            uint _e95 = F32_INF;
+            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e105 = sp_1;
-                if ((_e105 < BLAS_STACK)) {
-                    uint _e109 = sp_1;
-                    uint _e111 = far;
-                    traversal_stack[min((TLAS_STACK + _e109), 64u)] = _e111;
-                    uint _e116 = sp_1;
-                    sp_1 = (_e116 + 1u);
+                uint _e107 = sp_1;
+                if ((_e107 < BLAS_STACK)) {
+                    uint _e111 = sp_1;
+                    uint _e113 = far;
+                    traversal_stack[min((TLAS_STACK + _e111), 64u)] = _e113;
+                    uint _e118 = sp_1;
+                    sp_1 = (_e118 + 1u);
                 }
-                uint _e119 = near;
-                child = _e119;
+                uint _e121 = near;
+                child = _e121;
                 continue;
             }
-            uint _e121 = F32_INF;
-            if ((tl < uintBitsToFloat(_e121))) {
+            uint _e123 = F32_INF;
+            if ((tl < uintBitsToFloat(_e123))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tr < uintBitsToFloat(_e126))) {
+            uint _e128 = F32_INF;
+            if ((tr < uintBitsToFloat(_e128))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e131 = sp_1;
-        uvec2 _e132 = pop(TLAS_STACK, _e131);
-        if ((_e132.x == NO_HIT)) {
+        uint _e133 = sp_1;
+        uvec2 _e134 = pop(TLAS_STACK, _e133);
+        if ((_e134.x == NO_HIT)) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    Candidate _e138 = best;
-    return _e138;
+    Candidate _e140 = best;
+    return _e140;
 }
 
 Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
@@ -624,8 +639,8 @@ Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow
     return best_1;
 }
 
-float point_error(vec3 origin_3, vec3 along) {
-    vec3 a_5 = (abs(origin_3) + abs(along));
+float point_error(vec3 origin_2, vec3 along) {
+    vec3 a_5 = (abs(origin_2) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -649,14 +664,14 @@ float mesh_error(GpuInstance inst_4, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_3) {
     vec4 r2_ = abs(inst_4.object_to_world_2_);
     vec3 rounding = (vec3(GAMMA_4_) * vec3(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     vec3 carried = (vec3((1.0 + GAMMA_4_)) * vec3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
-    vec3 e = (rounding + carried);
-    return max(max(e.x, e.y), e.z);
+    vec3 e_1 = (rounding + carried);
+    return max(max(e_1.x, e_1.y), e_1.z);
 }
 
 vec3 decode_octahedral(uint bits) {
     vec3 n_1 = vec3(0.0);
-    vec2 e_1 = unpackSnorm2x16(bits);
-    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    vec2 e_2 = unpackSnorm2x16(bits);
+    n_1 = vec3(e_2.x, e_2.y, ((1.0 - abs(e_2.x)) - abs(e_2.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
@@ -689,14 +704,14 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Triangle _e42 = load_triangle(c_1.primitive);
-        vec2 b_6 = c_1.uv;
-        float w_2 = ((1.0 - b_6.x) - b_6.y);
+        vec2 b_8 = c_1.uv;
+        float w_2 = ((1.0 - b_8.x) - b_8.y);
         vec3 e1_ = (_e42.v1_ - _e42.v0_);
         vec3 e2_ = (_e42.v2_ - _e42.v0_);
-        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_6.x)) + (e2_ * vec3(b_6.y))));
+        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_8.x)) + (e2_ * vec3(b_8.y))));
         vec3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_6.x)), (e2_ * vec3(b_6.y)), p_7);
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_8.x)), (e2_ * vec3(b_8.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -704,7 +719,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
         vec3 _e91 = decode_octahedral(a0_.x);
         vec3 _e95 = decode_octahedral(a0_.y);
         vec3 _e101 = decode_octahedral(a0_.z);
-        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_6.x))) + (_e101 * vec3(b_6.y)));
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_8.x))) + (_e101 * vec3(b_8.y)));
         vec3 _e106 = n_shade;
         vec3 _e107 = n_shade;
         if ((dot(_e106, _e107) < 1e-12)) {
@@ -714,7 +729,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
         vec2 uv0_ = unpackHalf2x16(a0_.w);
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_6.x))) + (uv2_ * vec2(b_6.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_8.x))) + (uv2_ * vec2(b_8.y)));
         vec4 _e135 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
         hit.primitive = floatBitsToUint(_e135.w);
     }
@@ -796,9 +811,25 @@ PathState start_path(Ray ray_8) {
     return PathState(ray_8, vec3(1.0), vec3(0.0), true);
 }
 
-vec3 node_frame_hi(GpuNode header) {
-    vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
-    return _e5;
+vec3 safe_inverse(vec3 d) {
+    vec3 tiny = vec3(1.1754944e-38);
+    vec3 s_6 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_6 * tiny), lessThan(abs(d), tiny));
+    return (vec3(1.0) / dd);
+}
+
+float slab(vec3 lo_1, vec3 hi_1, vec3 origin_3, vec3 inv_dir, float tmin_1, float tmax_4) {
+    vec3 t0_1 = ((lo_1 - origin_3) * inv_dir);
+    vec3 t1_1 = ((hi_1 - origin_3) * inv_dir);
+    vec3 near_3 = min(t0_1, t1_1);
+    vec3 far_3 = max(t0_1, t1_1);
+    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
+    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
+    if ((enter_1 <= exit_1)) {
+        return enter_1;
+    }
+    uint _e30 = F32_INF;
+    return uintBitsToFloat(_e30);
 }
 
 Candidate intersect_scene(Ray ray_9, bool shadow_2) {
@@ -819,82 +850,84 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     vec3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
-    vec3 origin_5 = header_2.min_;
-    vec3 scale_3 = header_2.max_;
+    vec3 origin_4 = header_2.min_;
+    vec3 scale_2 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    float _e28 = slab(origin_4, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
         return _e33;
     }
+    vec3 _e34 = node_frame_hi(header_2);
+    BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_9);
     sp_2 = 0u;
     child_1 = header_2.a;
     while(true) {
-        uint _e38 = child_1;
-        if (((_e38 & NODE_LEAF_BIT) != 0u)) {
-            uint _e43 = child_1;
-            if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e52 = child_1;
-                Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
-                best_2 = _e56;
-                uint _e58 = best_2.slot;
-                if ((shadow_2 && (_e58 != NO_HIT))) {
-                    Candidate _e62 = best_2;
-                    return _e62;
+        uint _e41 = child_1;
+        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
+            uint _e46 = child_1;
+            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e55 = child_1;
+                Candidate _e58 = best_2;
+                Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_9, _e58, shadow_2);
+                best_2 = _e59;
+                uint _e61 = best_2.slot;
+                if ((shadow_2 && (_e61 != NO_HIT))) {
+                    Candidate _e65 = best_2;
+                    return _e65;
                 }
             }
         } else {
-            uint _e63 = child_1;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e63)];
-            float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
-            float tl_1 = _e70.x;
-            float tr_1 = _e70.y;
-            uint _e74 = F32_INF;
-            uint _e78 = F32_INF;
-            if (((tl_1 < uintBitsToFloat(_e74)) && (tr_1 < uintBitsToFloat(_e78)))) {
+            uint _e66 = child_1;
+            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e66)];
+            float _e72 = best_2.t;
+            vec2 _e73 = children_entry(n_7, _e36, _e72);
+            float tl_1 = _e73.x;
+            float tr_1 = _e73.y;
+            uint _e77 = F32_INF;
+            uint _e81 = F32_INF;
+            if (((tl_1 < uintBitsToFloat(_e77)) && (tr_1 < uintBitsToFloat(_e81)))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e89 = sp_2;
-                if ((_e89 < TLAS_STACK)) {
-                    uint _e92 = sp_2;
-                    uint _e93 = far_1;
-                    traversal_stack[min(_e92, 64u)] = _e93;
-                    uint _e98 = sp_2;
-                    sp_2 = (_e98 + 1u);
+                uint _e92 = sp_2;
+                if ((_e92 < TLAS_STACK)) {
+                    uint _e95 = sp_2;
+                    uint _e96 = far_1;
+                    traversal_stack[min(_e95, 64u)] = _e96;
+                    uint _e101 = sp_2;
+                    sp_2 = (_e101 + 1u);
                 }
-                uint _e101 = near_1;
-                child_1 = _e101;
+                uint _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            uint _e103 = F32_INF;
-            if ((tl_1 < uintBitsToFloat(_e103))) {
+            uint _e106 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e106))) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((tr_1 < uintBitsToFloat(_e108))) {
+            uint _e111 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e111))) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e113 = sp_2;
-        uvec2 _e114 = pop(0u, _e113);
-        if ((_e114.x == NO_HIT)) {
+        uint _e116 = sp_2;
+        uvec2 _e117 = pop(0u, _e116);
+        if ((_e117.x == NO_HIT)) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    Candidate _e120 = best_2;
-    return _e120;
+    Candidate _e123 = best_2;
+    return _e123;
 }
 
 SkyGradient load_SkyGradient(uint offset_2) {
@@ -910,13 +943,13 @@ SkyGradient load_SkyGradient(uint offset_2) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_4, Ray ray_10) {
+vec3 sky_gradient(SkyGradient b_6, Ray ray_10) {
     vec3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
-        return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4.0), 1.0)));
+        return mix(b_6.horizon, b_6.ground, vec3(min((-(y) * 4.0), 1.0)));
     }
-    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
+    return mix(b_6.horizon, b_6.zenith, vec3(sqrt(y)));
 }
 
 vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_11) {
@@ -1013,15 +1046,15 @@ vec3 step_toward(vec3 x_3, vec3 s) {
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_10 = (n_3 * vec3(d_4));
+    float d_5 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    vec3 offset_10 = (n_3 * vec3(d_5));
     vec3 _e17 = step_toward((p_5 + offset_10), offset_10);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_2, float dist) {
     vec3 n_4 = vec3(0.0);
-    float tmax_4 = 0.0;
+    float tmax_5 = 0.0;
     n_4 = normal_1;
     vec3 _e5 = n_4;
     if ((dot(dir_2, _e5) < 0.0)) {
@@ -1034,16 +1067,16 @@ Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_2, float dist) {
     vec3 _e22 = n_4;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_4 = uintBitsToFloat(_e25);
+    tmax_5 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
         vec3 light = (position + (dir_2 * vec3(dist)));
         float dd_1 = dot(dir_2, dir_2);
         float along_1 = (dot((light - _e23), dir_2) / dd_1);
         vec3 l_1 = (abs(position) + abs((dir_2 * vec3(dist))));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+        tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
-    float _e59 = tmax_4;
+    float _e59 = tmax_5;
     return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 

@@ -112,7 +112,15 @@ struct GpuNode {
     uint b;
 };
 typedef GpuNode type_10[1];
-typedef metal::float4 type_11[1];
+struct BoxRay {
+    metal::float3 step;
+    metal::float3 start_lo;
+    metal::packed_float3 start_hi;
+    float tmin;
+    float unit;
+    char _pad5[12];
+};
+typedef metal::float4 type_12[1];
 struct type_13 {
     uint inner[65];
 };
@@ -493,15 +501,6 @@ Ray to_object(
     return _e25;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
-) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
@@ -520,25 +519,59 @@ TriangleRay prepare_triangle_ray(
     return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
+metal::float3 node_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::float3 node_frame_hi(
+    GpuNode header
+) {
+    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
+    return _e5;
+}
+
+BoxRay box_ray(
+    metal::float3 origin_1,
+    metal::float3 scale_1,
+    metal::float3 extent,
+    Ray ray_2
+) {
+    float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
+    uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
+    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    float unit = as_type<float>(e << 23u);
+    metal::float3 floor = metal::float3(0.0000000000009094947);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_4 * floor, metal::abs(d_4) < floor);
+    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 start = rel * inv;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
+    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
 metal::float3 hit_triangle(
     TriangleRay r_1,
     uint slot,
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
     metal::float3 a_4 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_5 = _e18.xyz - r_1.origin;
+    metal::float3 b_7 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_5 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
-    float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
-    float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
+    float bx = b_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_7[metal::min(r_1.kz, 2u)]);
+    float by = b_7[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_7[metal::min(r_1.kz, 2u)]);
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -547,7 +580,7 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_7[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1);
     uint _e173 = F32_INF;
     return hit_8 ? metal::float3(t, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -555,7 +588,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_2,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -567,64 +600,48 @@ metal::uint3 node_box_lo(
     return metal::uint3(p.x & 65535u, p.x >> 16u, p.y & 65535u);
 }
 
-metal::float3 node_point(
-    metal::float3 origin,
-    metal::float3 scale,
-    metal::uint3 q
-) {
-    return origin + (static_cast<metal::float3>(q) * scale);
-}
-
 metal::uint3 node_box_hi(
     metal::uint3 p_1
 ) {
     return metal::uint3(p_1.y >> 16u, p_1.z & 65535u, p_1.z >> 16u);
 }
 
-float slab(
+float slab_in_frame(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin_1,
-    metal::float3 inv_dir,
-    float tmin_1,
+    BoxRay b_4,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin_1) * inv_dir;
-    metal::float3 t1_ = (hi - origin_1) * inv_dir;
+    metal::float3 t0_ = metal::fma(lo, b_4.step, b_4.start_lo);
+    metal::float3 t1_ = metal::fma(hi, b_4.step, b_4.start_hi);
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
-    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
-    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, b_4.tmin));
+    float exit = metal::min(metal::min(far_2.x, far_2.y), metal::min(far_2.z, tmax_2));
     if (enter <= exit) {
         return enter;
     }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    uint _e27 = F32_INF;
+    return as_type<float>(_e27);
 }
 
 metal::float2 children_entry(
     GpuNode n,
-    metal::float3 origin_2,
-    metal::float3 scale_1,
-    Ray ray_3,
-    metal::float3 inv,
+    BoxRay b_5,
     float tmax_3,
     thread uint& F32_INF
 ) {
     metal::uint3 lq = as_type<metal::uint3>(n.min);
     metal::uint3 rq = as_type<metal::uint3>(n.max);
-    metal::uint3 _e10 = node_box_lo(lq);
-    metal::float3 _e11 = node_point(origin_2, scale_1, _e10);
-    metal::uint3 _e12 = node_box_hi(lq);
-    metal::float3 _e13 = node_point(origin_2, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
-    metal::uint3 _e17 = node_box_lo(rq);
-    metal::float3 _e18 = node_point(origin_2, scale_1, _e17);
-    metal::uint3 _e19 = node_box_hi(rq);
-    metal::float3 _e20 = node_point(origin_2, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
-    return metal::float2(_e16, _e23);
+    float t_1 = tmax_3 * b_5.unit;
+    metal::uint3 _e9 = node_box_lo(lq);
+    metal::uint3 _e11 = node_box_hi(lq);
+    float _e13 = slab_in_frame(static_cast<metal::float3>(_e9), static_cast<metal::float3>(_e11), b_5, t_1, F32_INF);
+    metal::uint3 _e14 = node_box_lo(rq);
+    metal::uint3 _e16 = node_box_hi(rq);
+    float _e18 = slab_in_frame(static_cast<metal::float3>(_e14), static_cast<metal::float3>(_e16), b_5, t_1, F32_INF);
+    return metal::float2(_e13, _e18);
 }
 
 metal::uint2 pop(
@@ -648,7 +665,7 @@ Candidate intersect_mesh(
     bool shadow,
     thread uint& F32_INF,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -659,24 +676,23 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_4.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = nodes[base_1];
-    metal::float3 origin_4 = header_1.min;
-    metal::float3 scale_2 = header_1.max;
+    metal::float3 _e14 = node_frame_hi(header_1);
+    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_4);
     sp_1 = 0u;
     child = header_1.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e20 = child;
-        if ((_e20 & NODE_LEAF_BIT) != 0u) {
-            uint _e25 = child;
-            uint count_1 = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e32 = child;
-            uint first = _e32 & NODE_FIRST_MASK;
+        uint _e22 = child;
+        if ((_e22 & NODE_LEAF_BIT) != 0u) {
+            uint _e27 = child;
+            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e34 = child;
+            uint first = _e34 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -684,83 +700,83 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e75 = k;
-                    k = _e75 + 1u;
+                    uint _e77 = k;
+                    k = _e77 + 1u;
                 }
                 loop_init = false;
-                uint _e37 = k;
-                if (_e37 >= count_1) {
+                uint _e39 = k;
+                if (_e39 >= count_1) {
                     break;
                 }
-                uint _e41 = k;
-                uint prim = (inst_2.triangle_offset + first) + _e41;
-                float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
-                uint _e49 = F32_INF;
-                if (_e46.x < as_type<float>(_e49)) {
-                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e58.w);
+                uint _e43 = k;
+                uint prim = (inst_2.triangle_offset + first) + _e43;
+                float _e47 = best.t;
+                metal::float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47, F32_INF, triangles, _buffer_sizes);
+                uint _e51 = F32_INF;
+                if (_e48.x < as_type<float>(_e51)) {
+                    metal::float4 _e60 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e60.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_2, world_ray, c_6);
-                    if (_e73) {
+                    Candidate c_6 = Candidate {_e48.x, owner, prim, {}, _e48.yz, {}, metal::float3(0.0)};
+                    bool _e75 = accept(inst_2, world_ray, c_6);
+                    if (_e75) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e74 = best;
-                            return _e74;
+                            Candidate _e76 = best;
+                            return _e76;
                         }
                     }
                 }
             }
         } else {
-            uint _e78 = child;
-            GpuNode n_6 = nodes[base_1 + _e78];
-            float _e84 = best.t;
-            metal::float2 _e85 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e84, F32_INF);
-            float tl = _e85.x;
-            float tr = _e85.y;
-            uint _e89 = F32_INF;
-            uint _e93 = F32_INF;
-            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
+            uint _e80 = child;
+            GpuNode n_6 = nodes[base_1 + _e80];
+            float _e86 = best.t;
+            metal::float2 _e87 = children_entry(n_6, _e17, _e86, F32_INF);
+            float tl = _e87.x;
+            float tr = _e87.y;
+            uint _e91 = F32_INF;
+            uint _e95 = F32_INF;
+            if ((tl < as_type<float>(_e91)) && (tr < as_type<float>(_e95))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e105 = sp_1;
-                if (_e105 < BLAS_STACK) {
-                    uint _e109 = sp_1;
-                    uint _e111 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 64u)] = _e111;
-                    uint _e116 = sp_1;
-                    sp_1 = _e116 + 1u;
+                uint _e107 = sp_1;
+                if (_e107 < BLAS_STACK) {
+                    uint _e111 = sp_1;
+                    uint _e113 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e111, 64u)] = _e113;
+                    uint _e118 = sp_1;
+                    sp_1 = _e118 + 1u;
                 }
-                uint _e119 = near;
-                child = _e119;
+                uint _e121 = near;
+                child = _e121;
                 continue;
             }
-            uint _e121 = F32_INF;
-            if (tl < as_type<float>(_e121)) {
+            uint _e123 = F32_INF;
+            if (tl < as_type<float>(_e123)) {
                 child = n_6.a;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tr < as_type<float>(_e126)) {
+            uint _e128 = F32_INF;
+            if (tr < as_type<float>(_e128)) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e131 = sp_1;
-        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
-        if (_e132.x == NO_HIT) {
+        uint _e133 = sp_1;
+        metal::uint2 _e134 = pop(TLAS_STACK, _e133, traversal_stack);
+        if (_e134.x == NO_HIT) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    Candidate _e138 = best;
-    return _e138;
+    Candidate _e140 = best;
+    return _e140;
 }
 
 Candidate intersect_object(
@@ -771,7 +787,7 @@ Candidate intersect_object(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -789,16 +805,16 @@ Candidate intersect_object(
 }
 
 float point_error(
-    metal::float3 origin_3,
+    metal::float3 origin_2,
     metal::float3 along
 ) {
-    metal::float3 a_5 = metal::abs(origin_3) + metal::abs(along);
+    metal::float3 a_5 = metal::abs(origin_2) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
 }
 
 Triangle load_triangle(
     uint slot_3,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_3 * 3u];
@@ -829,16 +845,16 @@ float mesh_error(
     metal::float4 r2_ = metal::abs(inst_4.object_to_world_2_);
     metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
     metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
-    metal::float3 e = rounding + carried;
-    return metal::max(metal::max(e.x, e.y), e.z);
+    metal::float3 e_1 = rounding + carried;
+    return metal::max(metal::max(e_1.x, e_1.y), e_1.z);
 }
 
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n_1 = {};
-    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
-    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    metal::float2 e_2 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_2.x, e_2.y, (1.0 - metal::abs(e_2.x)) - metal::abs(e_2.y));
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
@@ -866,7 +882,7 @@ Hit finish_hit(
     Ray ray_6,
     Candidate c_1,
     device type_9 const& instances,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread float& hit_error,
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
@@ -882,7 +898,7 @@ Hit finish_hit(
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Triangle _e42 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
-        metal::float2 b_6 = c_1.uv;
+        metal::float2 b_8 = c_1.uv;
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
@@ -931,7 +947,7 @@ uint medium_at(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     device type_15 const& attributes,
@@ -997,7 +1013,7 @@ Ray sample_camera_ray(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     device type_15 const& attributes,
@@ -1023,11 +1039,35 @@ PathState start_path(
     return PathState {ray_8, metal::float3(1.0), metal::float3(0.0), true};
 }
 
-metal::float3 node_frame_hi(
-    GpuNode header
+metal::float3 safe_inverse(
+    metal::float3 d
 ) {
-    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
-    return _e5;
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_6 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+float slab(
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::float3 origin_3,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_4,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_1 = (lo_1 - origin_3) * inv_dir;
+    metal::float3 t1_1 = (hi_1 - origin_3) * inv_dir;
+    metal::float3 near_3 = metal::min(t0_1, t1_1);
+    metal::float3 far_3 = metal::max(t0_1, t1_1);
+    float enter_1 = metal::max(metal::max(near_3.x, near_3.y), metal::max(near_3.z, tmin_1));
+    float exit_1 = metal::min(metal::min(far_3.x, far_3.y) * 1.0000005, metal::min(far_3.z * 1.0000005, tmax_4));
+    if (enter_1 <= exit_1) {
+        return enter_1;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
 }
 
 Candidate intersect_scene(
@@ -1037,7 +1077,7 @@ Candidate intersect_scene(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1059,85 +1099,87 @@ Candidate intersect_scene(
     metal::float3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
-    metal::float3 origin_5 = header_2.min;
-    metal::float3 scale_3 = header_2.max;
+    metal::float3 origin_4 = header_2.min;
+    metal::float3 scale_2 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_4, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
         return _e33;
     }
+    metal::float3 _e34 = node_frame_hi(header_2);
+    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_9);
     sp_2 = 0u;
     child_1 = header_2.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e38 = child_1;
-        if ((_e38 & NODE_LEAF_BIT) != 0u) {
-            uint _e43 = child_1;
-            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e52 = child_1;
-                Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
-                best_2 = _e56;
-                uint _e58 = best_2.slot;
-                if (shadow_2 && (_e58 != NO_HIT)) {
-                    Candidate _e62 = best_2;
-                    return _e62;
+        uint _e41 = child_1;
+        if ((_e41 & NODE_LEAF_BIT) != 0u) {
+            uint _e46 = child_1;
+            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e55 = child_1;
+                Candidate _e58 = best_2;
+                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_9, _e58, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e59;
+                uint _e61 = best_2.slot;
+                if (shadow_2 && (_e61 != NO_HIT)) {
+                    Candidate _e65 = best_2;
+                    return _e65;
                 }
             }
         } else {
-            uint _e63 = child_1;
-            GpuNode n_7 = nodes[base_2 + _e63];
-            float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
-            float tl_1 = _e70.x;
-            float tr_1 = _e70.y;
-            uint _e74 = F32_INF;
-            uint _e78 = F32_INF;
-            if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
+            uint _e66 = child_1;
+            GpuNode n_7 = nodes[base_2 + _e66];
+            float _e72 = best_2.t;
+            metal::float2 _e73 = children_entry(n_7, _e36, _e72, F32_INF);
+            float tl_1 = _e73.x;
+            float tr_1 = _e73.y;
+            uint _e77 = F32_INF;
+            uint _e81 = F32_INF;
+            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e89 = sp_2;
-                if (_e89 < TLAS_STACK) {
-                    uint _e92 = sp_2;
-                    uint _e93 = far_1;
-                    traversal_stack.inner[metal::min(_e92, 64u)] = _e93;
-                    uint _e98 = sp_2;
-                    sp_2 = _e98 + 1u;
+                uint _e92 = sp_2;
+                if (_e92 < TLAS_STACK) {
+                    uint _e95 = sp_2;
+                    uint _e96 = far_1;
+                    traversal_stack.inner[metal::min(_e95, 64u)] = _e96;
+                    uint _e101 = sp_2;
+                    sp_2 = _e101 + 1u;
                 }
-                uint _e101 = near_1;
-                child_1 = _e101;
+                uint _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            uint _e103 = F32_INF;
-            if (tl_1 < as_type<float>(_e103)) {
+            uint _e106 = F32_INF;
+            if (tl_1 < as_type<float>(_e106)) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if (tr_1 < as_type<float>(_e108)) {
+            uint _e111 = F32_INF;
+            if (tr_1 < as_type<float>(_e111)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e113 = sp_2;
-        metal::uint2 _e114 = pop(0u, _e113, traversal_stack);
-        if (_e114.x == NO_HIT) {
+        uint _e116 = sp_2;
+        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
+        if (_e117.x == NO_HIT) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    Candidate _e120 = best_2;
-    return _e120;
+    Candidate _e123 = best_2;
+    return _e123;
 }
 
 SkyGradient load_SkyGradient(
@@ -1158,15 +1200,15 @@ SkyGradient load_SkyGradient(
 }
 
 metal::float3 sky_gradient(
-    SkyGradient b_4,
+    SkyGradient b_6,
     Ray ray_10
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if (y < 0.0) {
-        return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
+        return metal::mix(b_6.horizon, b_6.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
     }
-    return metal::mix(b_4.horizon, b_4.zenith, metal::float3(metal::sqrt(y)));
+    return metal::mix(b_6.horizon, b_6.zenith, metal::float3(metal::sqrt(y)));
 }
 
 metal::float3 dispatch_miss(
@@ -1325,8 +1367,8 @@ metal::float3 offset_origin(
     metal::float3 n_3,
     float error
 ) {
-    float d_4 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_10 = n_3 * metal::float3(d_4);
+    float d_5 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_10 = n_3 * metal::float3(d_5);
     metal::float3 _e17 = step_toward(p_5 + offset_10, offset_10);
     return _e17;
 }
@@ -1340,7 +1382,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
-    float tmax_4 = {};
+    float tmax_5 = {};
     n_4 = normal_1;
     metal::float3 _e5 = n_4;
     if (metal::dot(dir_2, _e5) < 0.0) {
@@ -1353,16 +1395,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_4;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_4 = as_type<float>(_e25);
+    tmax_5 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
         metal::float3 light = position + (dir_2 * metal::float3(dist));
         float dd_1 = metal::dot(dir_2, dir_2);
         float along_1 = metal::dot(light - _e23, dir_2) / dd_1;
         metal::float3 l_1 = metal::abs(position) + metal::abs(dir_2 * metal::float3(dist));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
+        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
-    float _e59 = tmax_4;
+    float _e59 = tmax_5;
     return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -1376,7 +1418,7 @@ float shadow_query(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1400,7 +1442,7 @@ LightSample point_light(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1431,7 +1473,7 @@ LightSample dispatch_light(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1452,7 +1494,7 @@ LightSample sample_light_query(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1479,7 +1521,7 @@ metal::float3 lambert_shade(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1535,7 +1577,7 @@ metal::float3 dispatch_closest_hit(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1596,7 +1638,7 @@ PathState path_step(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     device type_15 const& attributes,
@@ -1700,7 +1742,7 @@ PassSum add_sample(
     uint per_pass,
     thread uint& ray_count,
     device type_19& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PassSum next = {};
@@ -1751,7 +1793,7 @@ void render_pixel(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     device type_15 const& attributes,
@@ -1760,7 +1802,7 @@ void render_pixel(
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_19& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PassSum sums = {};
@@ -1818,7 +1860,7 @@ void render_invocation(
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
-    device type_11 const& triangles,
+    device type_12 const& triangles,
     thread type_13& traversal_stack,
     thread float& hit_error,
     device type_15 const& attributes,
@@ -1827,7 +1869,7 @@ void render_invocation(
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_19& counters,
-    device type_11& accum,
+    device type_12& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -1848,10 +1890,10 @@ struct renderInput {
 , device type_6 const& params [[buffer(6)]]
 , device type_9 const& instances [[buffer(3)]]
 , device type_10 const& nodes [[buffer(2)]]
-, device type_11 const& triangles [[buffer(4)]]
+, device type_12 const& triangles [[buffer(4)]]
 , device type_15 const& attributes [[buffer(5)]]
 , device type_19& counters [[buffer(9)]]
-, device type_11& accum [[buffer(8)]]
+, device type_12& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     type_5 scratch = {};

@@ -96,6 +96,19 @@ struct GpuNode {
     uint b;
 };
 
+struct BoxRay {
+    float3 step_;
+    int _pad1_0;
+    float3 start_lo;
+    int _pad2_0;
+    float3 start_hi;
+    float tmin;
+    float unit;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct Box {
     float3 min_;
     int _pad1_0;
@@ -566,14 +579,6 @@ Ray to_object(GpuInstance inst, Ray ray)
     return ray_25;
 }
 
-float3 safe_inverse(float3 d)
-{
-    float3 tiny = (1.1754944e-38).xxx;
-    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
-    return ((1.0).xxx / dd);
-}
-
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
     TriangleRay ret = (TriangleRay)0;
     ret.origin = arg0;
@@ -603,18 +608,55 @@ TriangleRay prepare_triangle_ray(Ray ray_1)
     return triangleray;
 }
 
+float3 node_point(float3 origin, float3 scale, uint3 q)
+{
+    return (origin + (float3(q) * scale));
+}
+
+float3 node_frame_hi(GpuNode header)
+{
+    const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
+    return _e5;
+}
+
+BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float arg4) {
+    BoxRay ret = (BoxRay)0;
+    ret.step_ = arg0;
+    ret.start_lo = arg1;
+    ret.start_hi = arg2;
+    ret.tmin = arg3;
+    ret.unit = arg4;
+    return ret;
+}
+
+BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+{
+    float m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
+    uint e = min(max(((asuint(m_1) >> 23u) & 255u), 1u), 253u);
+    float3 d_4 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
+    float unit = asfloat((e << 23u));
+    float3 floor_ = (9.094947e-13).xxx;
+    float3 s_4 = ((d_4 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 inv = ((1.0).xxx / ((abs(d_4) < floor_) ? (s_4 * floor_) : d_4));
+    float3 rel = (origin_1 - ray_2.origin);
+    float3 start = (rel * inv);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
+    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    return boxray;
+}
+
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
 {
     float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
     float3 a_4 = (_e8.xyz - r_1.origin);
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b_6 = (_e18.xyz - r_1.origin);
+    float3 b_8 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
     float3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float bx = (b_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float by = (b_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float bx = (b_8[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_8[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float by = (b_8[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_8[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -623,13 +665,13 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0)));
     float det = ((u + v_3) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_3 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_6 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_3 * (r_1.shear.z * b_8[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_7 ? float3(t_6, (v_3 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
 {
     return true;
 }
@@ -639,46 +681,38 @@ uint3 node_box_lo(uint3 p)
     return uint3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-float3 node_point(float3 origin, float3 scale, uint3 q)
-{
-    return (origin + (float3(q) * scale));
-}
-
 uint3 node_box_hi(uint3 p_1)
 {
     return uint3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
-float slab(float3 lo, float3 hi, float3 origin_1, float3 inv_dir, float tmin_1, float tmax_2)
+float slab_in_frame(float3 lo, float3 hi, BoxRay b_4, float tmax_2)
 {
-    float3 t0_ = ((lo - origin_1) * inv_dir);
-    float3 t1_ = ((hi - origin_1) * inv_dir);
+    float3 t0_ = mad(lo, b_4.step_, b_4.start_lo);
+    float3 t1_ = mad(hi, b_4.step_, b_4.start_hi);
     float3 near_2 = min(t0_, t1_);
     float3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
-    float exit = min((min(far_2.x, far_2.y) * 1.0000005), min((far_2.z * 1.0000005), tmax_2));
+    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
+    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
     if ((enter <= exit)) {
         return enter;
     }
-    uint _e30 = F32_INF;
-    return asfloat(_e30);
+    uint _e27 = F32_INF;
+    return asfloat(_e27);
 }
 
-float2 children_entry(GpuNode n, float3 origin_2, float3 scale_1, Ray ray_3, float3 inv, float tmax_3)
+float2 children_entry(GpuNode n, BoxRay b_5, float tmax_3)
 {
     uint3 lq = asuint(n.min_);
     uint3 rq = asuint(n.max_);
-    const uint3 _e10 = node_box_lo(lq);
-    const float3 _e11 = node_point(origin_2, scale_1, _e10);
-    const uint3 _e12 = node_box_hi(lq);
-    const float3 _e13 = node_point(origin_2, scale_1, _e12);
-    const float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
-    const uint3 _e17 = node_box_lo(rq);
-    const float3 _e18 = node_point(origin_2, scale_1, _e17);
-    const uint3 _e19 = node_box_hi(rq);
-    const float3 _e20 = node_point(origin_2, scale_1, _e19);
-    const float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
-    return float2(_e16, _e23);
+    float t_7 = (tmax_3 * b_5.unit);
+    const uint3 _e9 = node_box_lo(lq);
+    const uint3 _e11 = node_box_hi(lq);
+    const float _e13 = slab_in_frame(float3(_e9), float3(_e11), b_5, t_7);
+    const uint3 _e14 = node_box_lo(rq);
+    const uint3 _e16 = node_box_hi(rq);
+    const float _e18 = slab_in_frame(float3(_e14), float3(_e16), b_5, t_7);
+    return float2(_e13, _e18);
 }
 
 uint2 pop(uint base, uint sp)
@@ -709,24 +743,23 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const float3 _e8 = safe_inverse(ray_4.dir);
-    const TriangleRay _e9 = prepare_triangle_ray(ray_4);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    float3 origin_4 = header_1.min_;
-    float3 scale_2 = header_1.max_;
+    const float3 _e14 = node_frame_hi(header_1);
+    const BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
     sp_1 = 0u;
     child = header_1.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e20 = child;
-        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
-            uint _e25 = child;
-            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e32 = child;
-            uint first = (_e32 & NODE_FIRST_MASK);
+        uint _e22 = child;
+        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
+            uint _e27 = child;
+            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e34 = child;
+            uint first = (_e34 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -734,84 +767,84 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e75 = k;
-                    k = (_e75 + 1u);
+                    uint _e77 = k;
+                    k = (_e77 + 1u);
                 }
                 loop_init = false;
-                uint _e37 = k;
-                if ((_e37 >= count_1)) {
+                uint _e39 = k;
+                if ((_e39 >= count_1)) {
                     break;
                 }
-                uint _e41 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e41);
-                float _e45 = best.t;
-                const float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
-                uint _e49 = F32_INF;
-                if ((_e46.x < asfloat(_e49))) {
-                    float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e58.w);
+                uint _e43 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e43);
+                float _e47 = best.t;
+                const float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
+                uint _e51 = F32_INF;
+                if ((_e48.x < asfloat(_e51))) {
+                    float4 _e60 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e60.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
-                    const bool _e73 = accept(inst_2, world_ray, c_6);
-                    if (_e73) {
+                    Candidate c_6 = ConstructCandidate(_e48.x, owner, prim, _e48.yz, (0.0).xxx);
+                    const bool _e75 = accept(inst_2, world_ray, c_6);
+                    if (_e75) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e74 = best;
-                            const Candidate candidate_1 = _e74;
+                            Candidate _e76 = best;
+                            const Candidate candidate_1 = _e76;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e78 = child;
-            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e78)*32+0)), asuint(nodes.Load((base_1 + _e78)*32+12)), asfloat(nodes.Load3((base_1 + _e78)*32+16)), asuint(nodes.Load((base_1 + _e78)*32+28)));
-            float _e84 = best.t;
-            const float2 _e85 = children_entry(n_8, origin_4, scale_2, ray_4, _e8, _e84);
-            float tl = _e85.x;
-            float tr = _e85.y;
-            uint _e89 = F32_INF;
-            uint _e93 = F32_INF;
-            if (((tl < asfloat(_e89)) && (tr < asfloat(_e93)))) {
+            uint _e80 = child;
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e80)*32+0)), asuint(nodes.Load((base_1 + _e80)*32+12)), asfloat(nodes.Load3((base_1 + _e80)*32+16)), asuint(nodes.Load((base_1 + _e80)*32+28)));
+            float _e86 = best.t;
+            const float2 _e87 = children_entry(n_8, _e17, _e86);
+            float tl = _e87.x;
+            float tr = _e87.y;
+            uint _e91 = F32_INF;
+            uint _e95 = F32_INF;
+            if (((tl < asfloat(_e91)) && (tr < asfloat(_e95)))) {
                 near = n_8.a;
                 far = n_8.b;
                 if (((tr < tl) != shadow)) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e105 = sp_1;
-                if ((_e105 < BLAS_STACK)) {
-                    uint _e109 = sp_1;
-                    uint _e111 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e109), 69u)), 69u)] = _e111;
-                    uint _e116 = sp_1;
-                    sp_1 = (_e116 + 1u);
+                uint _e107 = sp_1;
+                if ((_e107 < BLAS_STACK)) {
+                    uint _e111 = sp_1;
+                    uint _e113 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e111), 69u)), 69u)] = _e113;
+                    uint _e118 = sp_1;
+                    sp_1 = (_e118 + 1u);
                 }
-                uint _e119 = near;
-                child = _e119;
+                uint _e121 = near;
+                child = _e121;
                 continue;
             }
-            uint _e121 = F32_INF;
-            if ((tl < asfloat(_e121))) {
+            uint _e123 = F32_INF;
+            if ((tl < asfloat(_e123))) {
                 child = n_8.a;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tr < asfloat(_e126))) {
+            uint _e128 = F32_INF;
+            if ((tr < asfloat(_e128))) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e131 = sp_1;
-        const uint2 _e132 = pop(TLAS_STACK, _e131);
-        if ((_e132.x == NO_HIT)) {
+        uint _e133 = sp_1;
+        const uint2 _e134 = pop(TLAS_STACK, _e133);
+        if ((_e134.x == NO_HIT)) {
             break;
         }
-        child = _e132.x;
-        sp_1 = _e132.y;
+        child = _e134.x;
+        sp_1 = _e134.y;
     }
-    Candidate _e138 = best;
-    const Candidate candidate_2 = _e138;
+    Candidate _e140 = best;
+    const Candidate candidate_2 = _e140;
     return candidate_2;
 }
 
@@ -846,17 +879,17 @@ float2 ZeroValuefloat2() {
     return (float2)0;
 }
 
-Intersection box_intersect(Box b_4, Ray ray_5)
+Intersection box_intersect(Box b_6, Ray ray_5)
 {
     float t = (float)0;
     uint axis = (uint)0;
     float sign_ = (float)0;
     float3 n_1 = (float3)0;
 
-    bool3 tiny_1 = (abs(ray_5.dir) < (1e-30).xxx);
-    float3 inv_1 = ((1.0).xxx / (tiny_1 ? (1e-30).xxx : ray_5.dir));
-    float3 t_lo = ((b_4.min_ - ray_5.origin) * inv_1);
-    float3 t_hi = ((b_4.max_ - ray_5.origin) * inv_1);
+    bool3 tiny = (abs(ray_5.dir) < (1e-30).xxx);
+    float3 inv_1 = ((1.0).xxx / (tiny ? (1e-30).xxx : ray_5.dir));
+    float3 t_lo = ((b_6.min_ - ray_5.origin) * inv_1);
+    float3 t_hi = ((b_6.max_ - ray_5.origin) * inv_1);
     float3 near_3 = min(t_lo, t_hi);
     float3 far_3 = max(t_lo, t_hi);
     float entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -887,10 +920,10 @@ Intersection box_intersect(Box b_4, Ray ray_5)
     uint _e99 = axis;
     n_1[min(uint(min(_e91, 2u)), 2u)] = (_e95 * ((ray_5.dir[min(uint(min(_e99, 2u)), 2u)] >= 0.0) ? 1.0 : -1.0));
     float _e109 = t;
-    float3 rel = (((ray_5.origin + (ray_5.dir * (_e109).xxx)) - b_4.min_) / max((b_4.max_ - b_4.min_), (1e-30).xxx));
+    float3 rel_1 = (((ray_5.origin + (ray_5.dir * (_e109).xxx)) - b_6.min_) / max((b_6.max_ - b_6.min_), (1e-30).xxx));
     uint _e124 = axis;
     uint _e129 = axis;
-    float2 uv = ((_e129 == 0u) ? rel.zy : ((_e124 == 1u) ? rel.xz : rel.xy));
+    float2 uv = ((_e129 == 0u) ? rel_1.zy : ((_e124 == 1u) ? rel_1.xz : rel_1.xy));
     float _e133 = t;
     float3 _e134 = n_1;
     const Intersection intersection_2 = ConstructIntersection(_e133, _e134, uv);
@@ -920,8 +953,8 @@ Intersection sphere_intersect(Sphere s, Ray ray_6)
 
     float3 f_2 = (ray_6.origin - s.center_);
     float a_5 = dot(ray_6.dir, ray_6.dir);
-    float b_7 = -(dot(f_2, ray_6.dir));
-    float3 l_4 = (f_2 + (ray_6.dir * ((b_7 / a_5)).xxx));
+    float b_9 = -(dot(f_2, ray_6.dir));
+    float3 l_4 = (f_2 + (ray_6.dir * ((b_9 / a_5)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_4, l_4)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -929,7 +962,7 @@ Intersection sphere_intersect(Sphere s, Ray ray_6)
         const Intersection intersection_3 = ConstructIntersection(asfloat(_e30), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_3;
     }
-    float q_1 = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
+    float q_1 = (b_9 + (((b_9 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
     float t0_1 = ((dot(f_2, f_2) - r2_) / q_1);
     float t1_1 = (q_1 / a_5);
     t_1 = min(t0_1, t1_1);
@@ -1030,9 +1063,9 @@ Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow
     return candidate_5;
 }
 
-float point_error(float3 origin_3, float3 along)
+float point_error(float3 origin_2, float3 along)
 {
-    float3 a_6 = (abs(origin_3) + abs(along));
+    float3 a_6 = (abs(origin_2) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -1068,16 +1101,16 @@ float mesh_error(GpuInstance inst_4, float3 v0_, float3 db1_, float3 db2_, float
     float4 r2_1 = abs(inst_4.object_to_world_2_);
     float3 rounding = ((GAMMA_4_).xxx * float3(dot(r0_, q_3), dot(r1_, q_3), dot(r2_1, q_3)));
     float3 carried = (((1.0 + GAMMA_4_)).xxx * float3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_1.xyz, obj)));
-    float3 e = (rounding + carried);
-    return max(max(e.x, e.y), e.z);
+    float3 e_1 = (rounding + carried);
+    return max(max(e_1.x, e_1.y), e_1.z);
 }
 
 float3 decode_octahedral(uint bits)
 {
     float3 n_2 = (float3)0;
 
-    float2 e_1 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n_2 = float3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float2 e_2 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n_2 = float3(e_2.x, e_2.y, ((1.0 - abs(e_2.x)) - abs(e_2.y)));
     float _e14 = n_2.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_2;
@@ -1126,14 +1159,14 @@ Hit finish_hit(Ray ray_9, Candidate c_1)
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         const Triangle _e42 = load_triangle(c_1.primitive);
-        float2 b_8 = c_1.uv;
-        float w_2 = ((1.0 - b_8.x) - b_8.y);
+        float2 b_10 = c_1.uv;
+        float w_2 = ((1.0 - b_10.x) - b_10.y);
         float3 e1_ = (_e42.v1_ - _e42.v0_);
         float3 e2_ = (_e42.v2_ - _e42.v0_);
-        float3 p_7 = (_e42.v0_ + ((e1_ * (b_8.x).xxx) + (e2_ * (b_8.y).xxx)));
+        float3 p_7 = (_e42.v0_ + ((e1_ * (b_10.x).xxx) + (e2_ * (b_10.y).xxx)));
         const float3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_8.x).xxx), (e2_ * (b_8.y).xxx), p_7);
+        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_10.x).xxx), (e2_ * (b_10.y).xxx), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -1141,7 +1174,7 @@ Hit finish_hit(Ray ray_9, Candidate c_1)
         const float3 _e91 = decode_octahedral(a0_.x);
         const float3 _e95 = decode_octahedral(a0_.y);
         const float3 _e101 = decode_octahedral(a0_.z);
-        n_shade = (((_e91 * (w_2).xxx) + (_e95 * (b_8.x).xxx)) + (_e101 * (b_8.y).xxx));
+        n_shade = (((_e91 * (w_2).xxx) + (_e95 * (b_10.x).xxx)) + (_e101 * (b_10.y).xxx));
         float3 _e106 = n_shade;
         float3 _e107 = n_shade;
         if ((dot(_e106, _e107) < 1e-12)) {
@@ -1154,7 +1187,7 @@ Hit finish_hit(Ray ray_9, Candidate c_1)
         float2 uv1_ = float2(f16tof32(_e114), f16tof32((_e114) >> 16));
         uint _e116 = a1_.y;
         float2 uv2_ = float2(f16tof32(_e116), f16tof32((_e116) >> 16));
-        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_8.x).xx)) + (uv2_ * (b_8.y).xx));
+        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_10.x).xx)) + (uv2_ * (b_10.y).xx));
         float4 _e135 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
         hit.primitive = asuint(_e135.w);
     }
@@ -1241,10 +1274,27 @@ Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
     return ray_26;
 }
 
-float3 node_frame_hi(GpuNode header)
+float3 safe_inverse(float3 d)
 {
-    const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
-    return _e5;
+    float3 tiny_1 = (1.1754944e-38).xxx;
+    float3 s_6 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny_1) ? (s_6 * tiny_1) : d);
+    return ((1.0).xxx / dd);
+}
+
+float slab(float3 lo_1, float3 hi_1, float3 origin_3, float3 inv_dir, float tmin_1, float tmax_4)
+{
+    float3 t0_2 = ((lo_1 - origin_3) * inv_dir);
+    float3 t1_2 = ((hi_1 - origin_3) * inv_dir);
+    float3 near_4 = min(t0_2, t1_2);
+    float3 far_4 = max(t0_2, t1_2);
+    float enter_1 = max(max(near_4.x, near_4.y), max(near_4.z, tmin_1));
+    float exit_2 = min((min(far_4.x, far_4.y) * 1.0000005), min((far_4.z * 1.0000005), tmax_4));
+    if ((enter_1 <= exit_2)) {
+        return enter_1;
+    }
+    uint _e30 = F32_INF;
+    return asfloat(_e30);
 }
 
 Candidate intersect_scene(Ray ray_11, bool shadow_2)
@@ -1268,87 +1318,89 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
     const float3 _e16 = safe_inverse(ray_11.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    float3 origin_5 = header_2.min_;
-    float3 scale_3 = header_2.max_;
+    float3 origin_4 = header_2.min_;
+    float3 scale_2 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
+    const float _e28 = slab(origin_4, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
         const Candidate candidate_7 = _e33;
         return candidate_7;
     }
+    const float3 _e34 = node_frame_hi(header_2);
+    const BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_11);
     sp_2 = 0u;
     child_1 = header_2.a;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e38 = child_1;
-        if (((_e38 & NODE_LEAF_BIT) != 0u)) {
-            uint _e43 = child_1;
-            if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e52 = child_1;
-                Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
-                best_2 = _e56;
-                uint _e58 = best_2.slot;
-                if ((shadow_2 && (_e58 != NO_HIT))) {
-                    Candidate _e62 = best_2;
-                    const Candidate candidate_8 = _e62;
+        uint _e41 = child_1;
+        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
+            uint _e46 = child_1;
+            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e55 = child_1;
+                Candidate _e58 = best_2;
+                const Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_11, _e58, shadow_2);
+                best_2 = _e59;
+                uint _e61 = best_2.slot;
+                if ((shadow_2 && (_e61 != NO_HIT))) {
+                    Candidate _e65 = best_2;
+                    const Candidate candidate_8 = _e65;
                     return candidate_8;
                 }
             }
         } else {
-            uint _e63 = child_1;
-            GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
-            float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_11, _e16, _e69);
-            float tl_1 = _e70.x;
-            float tr_1 = _e70.y;
-            uint _e74 = F32_INF;
-            uint _e78 = F32_INF;
-            if (((tl_1 < asfloat(_e74)) && (tr_1 < asfloat(_e78)))) {
+            uint _e66 = child_1;
+            GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e66)*32+0)), asuint(nodes.Load((base_2 + _e66)*32+12)), asfloat(nodes.Load3((base_2 + _e66)*32+16)), asuint(nodes.Load((base_2 + _e66)*32+28)));
+            float _e72 = best_2.t;
+            const float2 _e73 = children_entry(n_9, _e36, _e72);
+            float tl_1 = _e73.x;
+            float tr_1 = _e73.y;
+            uint _e77 = F32_INF;
+            uint _e81 = F32_INF;
+            if (((tl_1 < asfloat(_e77)) && (tr_1 < asfloat(_e81)))) {
                 near_1 = n_9.a;
                 far_1 = n_9.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_9.b;
                     far_1 = n_9.a;
                 }
-                uint _e89 = sp_2;
-                if ((_e89 < TLAS_STACK)) {
-                    uint _e92 = sp_2;
-                    uint _e93 = far_1;
-                    traversal_stack[min(uint(min(_e92, 69u)), 69u)] = _e93;
-                    uint _e98 = sp_2;
-                    sp_2 = (_e98 + 1u);
+                uint _e92 = sp_2;
+                if ((_e92 < TLAS_STACK)) {
+                    uint _e95 = sp_2;
+                    uint _e96 = far_1;
+                    traversal_stack[min(uint(min(_e95, 69u)), 69u)] = _e96;
+                    uint _e101 = sp_2;
+                    sp_2 = (_e101 + 1u);
                 }
-                uint _e101 = near_1;
-                child_1 = _e101;
+                uint _e104 = near_1;
+                child_1 = _e104;
                 continue;
             }
-            uint _e103 = F32_INF;
-            if ((tl_1 < asfloat(_e103))) {
+            uint _e106 = F32_INF;
+            if ((tl_1 < asfloat(_e106))) {
                 child_1 = n_9.a;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((tr_1 < asfloat(_e108))) {
+            uint _e111 = F32_INF;
+            if ((tr_1 < asfloat(_e111))) {
                 child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e113 = sp_2;
-        const uint2 _e114 = pop(0u, _e113);
-        if ((_e114.x == NO_HIT)) {
+        uint _e116 = sp_2;
+        const uint2 _e117 = pop(0u, _e116);
+        if ((_e117.x == NO_HIT)) {
             break;
         }
-        child_1 = _e114.x;
-        sp_2 = _e114.y;
+        child_1 = _e117.x;
+        sp_2 = _e117.y;
     }
-    Candidate _e120 = best_2;
-    const Candidate candidate_9 = _e120;
+    Candidate _e123 = best_2;
+    const Candidate candidate_9 = _e123;
     return candidate_9;
 }
 
@@ -1367,9 +1419,9 @@ ConstantBackground load_ConstantBackground(uint offset_5)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_5, Ray ray_12)
+float3 constant_background(ConstantBackground b_7, Ray ray_12)
 {
-    return b_5.color;
+    return b_7.color;
 }
 
 float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_13)
@@ -1451,10 +1503,10 @@ float shadow_preset(float3 normal, float3 dir)
 
 void scratch_store3f(uint i_2, float3 v_2)
 {
-    uint3 b_9 = asuint(v_2);
-    scratch[min(uint(min(i_2, 24u)), 24u)] = b_9.x;
-    scratch[min(uint(min((i_2 + 1u), 24u)), 24u)] = b_9.y;
-    scratch[min(uint(min((i_2 + 2u), 24u)), 24u)] = b_9.z;
+    uint3 b_11 = asuint(v_2);
+    scratch[min(uint(min(i_2, 24u)), 24u)] = b_11.x;
+    scratch[min(uint(min((i_2 + 1u), 24u)), 24u)] = b_11.y;
+    scratch[min(uint(min((i_2 + 2u), 24u)), 24u)] = b_11.z;
     return;
 }
 
@@ -1584,9 +1636,9 @@ float3x3 orthonormal_basis(float3 n_4)
 {
     float sign_1 = (((asuint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
     float a_7 = (-1.0 / (sign_1 + n_4.z));
-    float b_10 = ((n_4.x * n_4.y) * a_7);
+    float b_12 = ((n_4.x * n_4.y) * a_7);
     float _e16 = (sign_1 * n_4.x);
-    return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_1 * b_10), -(_e16)), float3(b_10, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
+    return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_1 * b_12), -(_e16)), float3(b_12, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
 LightSample sphere_light(SphereLight l_2, float3 position_3, float3 normal_4)
@@ -1735,8 +1787,8 @@ float3 step_toward(float3 x_3, float3 s_1)
 
 float3 offset_origin(float3 p_5, float3 n_5, float error)
 {
-    float d_4 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
-    float3 offset_16 = (n_5 * (d_4).xxx);
+    float d_5 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    float3 offset_16 = (n_5 * (d_5).xxx);
     const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
@@ -1744,7 +1796,7 @@ float3 offset_origin(float3 p_5, float3 n_5, float error)
 Ray shadow_ray(float3 position_6, float3 normal_7, float3 dir_2, float dist_1)
 {
     float3 n_6 = (float3)0;
-    float tmax_4 = (float)0;
+    float tmax_5 = (float)0;
 
     n_6 = normal_7;
     float3 _e5 = n_6;
@@ -1758,16 +1810,16 @@ Ray shadow_ray(float3 position_6, float3 normal_7, float3 dir_2, float dist_1)
     float3 _e22 = n_6;
     const float3 _e23 = offset_origin(position_6, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_4 = asfloat(_e25);
+    tmax_5 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < asfloat(_e29))) {
         float3 light = (position_6 + (dir_2 * (dist_1).xxx));
         float dd_1 = dot(dir_2, dir_2);
         float along_2 = (dot((light - _e23), dir_2) / dd_1);
         float3 l_5 = (abs(position_6) + abs((dir_2 * (dist_1).xxx)));
-        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
+        tmax_5 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
     }
-    float _e59 = tmax_4;
+    float _e59 = tmax_5;
     const Ray ray_27 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
     return ray_27;
 }
@@ -1797,8 +1849,8 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_9)
     uint entry_1 = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = asuint(params.Load(entry_1*4));
     uint offset_17 = asuint(params.Load((entry_1 + 1u)*4));
-    uint start = rng_state;
-    after = start;
+    uint start_1 = rng_state;
+    after = start_1;
     resolved = 0u;
     bits_1 = 0u;
     scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)] = 0u;
@@ -1807,7 +1859,7 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_9)
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        rng_state = start;
+        rng_state = start_1;
         scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = 0u;
         scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 0u;
         const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_9);
