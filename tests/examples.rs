@@ -336,8 +336,7 @@ fn every_example_matches_its_reference_image() {
     let Some(gpu) = gpu_or_skip("every_example_matches_its_reference_image") else {
         return;
     };
-    let out_dir = std::env::temp_dir().join(format!("rtc-examples-{}", std::process::id()));
-    std::fs::create_dir_all(&out_dir).expect("temp dir");
+    let out_dir = common::temp_dir("examples", "renders");
     let mut failures = Vec::new();
     let mut cases = Vec::new();
     for dir in example_dirs() {

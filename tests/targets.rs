@@ -20,6 +20,11 @@ use rtc_compiler::link::LinkOptions;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+#[path = "../runtime/tests/common/scratch.rs"]
+mod scratch;
+
+use scratch::Scratch;
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
@@ -216,7 +221,7 @@ fn examples() -> Vec<PathBuf> {
 
 #[test]
 fn every_example_passes_every_validator() {
-    let tmp = std::env::temp_dir().join(format!("rtc-targets-{}", std::process::id()));
+    let tmp = Scratch::new(&format!("targets-{}", std::process::id()));
     let mut failures = Vec::new();
     for ex in examples() {
         let name = ex
@@ -267,8 +272,7 @@ fn every_stdlib_program_passes_every_validator() {
     // A scene importing every standard-library module, compiled unspecialised (--all-programs), links
     // every program of the standard library into one kernel. The import list is generated, so a new
     // stdlib module is covered without editing this test.
-    let tmp = std::env::temp_dir().join(format!("rtc-targets-std-{}", std::process::id()));
-    std::fs::create_dir_all(&tmp).expect("temp dir");
+    let tmp = Scratch::new(&format!("targets-std-{}", std::process::id()));
     let modules = stdlib_modules();
     assert!(modules.len() >= 7, "found only {modules:?}");
     let mut text: String = modules

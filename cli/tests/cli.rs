@@ -6,6 +6,11 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+#[path = "../../runtime/tests/common/scratch.rs"]
+mod scratch;
+
+use scratch::Scratch;
+
 fn rtc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rtc"))
         .args(args)
@@ -30,11 +35,8 @@ fn repo() -> PathBuf {
 }
 
 /// A scratch folder for this test process.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create a scratch folder");
-    dir
+fn scratch(name: &str) -> Scratch {
+    Scratch::new(&format!("cli-{}-{name}", std::process::id()))
 }
 
 fn s(p: &Path) -> &str {

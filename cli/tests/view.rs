@@ -12,8 +12,13 @@
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::read_image;
 use std::io::{BufRead, BufReader, Read};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Stdio};
+
+#[path = "../../runtime/tests/common/scratch.rs"]
+mod scratch;
+
+use scratch::Scratch;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -129,11 +134,8 @@ fn red_blue(path: &Path) -> (f32, f32) {
     (r / n, b / n)
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-view-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+fn temp_dir(name: &str) -> Scratch {
+    Scratch::new(&format!("view-{name}-{}", std::process::id()))
 }
 
 #[test]

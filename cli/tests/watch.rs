@@ -7,8 +7,13 @@
 //! kernels; a scene left at `EXEC_AUTO` runs the wavefront model's stage kernels here).
 
 use std::io::{BufRead, BufReader, Read};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Stdio};
+
+#[path = "../../runtime/tests/common/scratch.rs"]
+mod scratch;
+
+use scratch::Scratch;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant, SystemTime};
 
@@ -156,11 +161,8 @@ fn parse_counts(text: &str) -> (u32, u32) {
     }
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-watch-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+fn temp_dir(name: &str) -> Scratch {
+    Scratch::new(&format!("watch-{name}-{}", std::process::id()))
 }
 
 fn modified(path: &Path) -> SystemTime {

@@ -3,8 +3,13 @@
 
 #![allow(dead_code)] // each suite uses some of these
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
+
+#[path = "../../../runtime/tests/common/scratch.rs"]
+mod scratch;
+
+pub use scratch::Scratch;
 
 /// Runs this build's `rtc` with `args`, without colour, with a runtime dir for Mesa.
 pub fn rtc(args: &[&str]) -> Output {
@@ -25,12 +30,10 @@ pub fn text(out: &Output) -> String {
     )
 }
 
-/// A fresh, empty scratch folder for one test of the suite `suite`, unique to this process.
-pub fn scratch(suite: &str, name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-{suite}-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create a scratch folder");
-    dir
+/// A fresh, empty scratch folder for one test of the suite `suite`, unique to this process,
+/// removed when the test passes ([`Scratch`]).
+pub fn scratch(suite: &str, name: &str) -> Scratch {
+    Scratch::new(&format!("{suite}-{}-{name}", std::process::id()))
 }
 
 /// `p` as a command-line argument.

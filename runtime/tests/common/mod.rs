@@ -10,8 +10,9 @@
 
 pub mod image;
 pub mod scene;
+mod scratch;
 
-use std::path::PathBuf;
+pub use scratch::Scratch;
 
 use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu, GpuOptions, PipelineCacheConfig};
 
@@ -41,10 +42,8 @@ pub fn gpu_with_or_skip(test: &str, options: &GpuOptions) -> Option<Gpu> {
     }
 }
 
-/// A fresh, empty temporary folder for one test of the suite `suite`, unique to this process.
-pub fn temp_dir(suite: &str, name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-{suite}-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+/// A fresh, empty temporary folder for one test of the suite `suite`, unique to this process,
+/// removed when the test passes ([`Scratch`]).
+pub fn temp_dir(suite: &str, name: &str) -> Scratch {
+    Scratch::new(&format!("{suite}-{name}-{}", std::process::id()))
 }
