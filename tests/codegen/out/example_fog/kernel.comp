@@ -675,15 +675,20 @@ uvec3 node_box_hi(uvec3 p_3) {
 float slab_in_frame(vec3 lo, vec3 hi, BoxRay b_4, float tmax_2) {
     vec3 t0_ = fma(lo, b_4.step_, b_4.start_lo);
     vec3 t1_ = fma(hi, b_4.step_, b_4.start_hi);
-    vec3 near_2 = min(t0_, t1_);
-    vec3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
-    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if ((enter <= exit)) {
-        return enter;
+    bvec3 flip_1 = lessThan(floatBitsToInt(b_4.step_), ivec3(0));
+    vec3 near_2 = mix(t0_, t1_, flip_1);
+    vec3 far_2 = mix(t1_, t0_, flip_1);
+    vec2 e_3 = mix(near_2.xy, near_2.yz, lessThan(near_2.xy, near_2.yz));
+    float enter = ((e_3.x < e_3.y) ? e_3.y : e_3.x);
+    vec2 x_6 = mix(far_2.xy, far_2.yz, lessThan(far_2.yz, far_2.xy));
+    float exit = ((x_6.y < x_6.x) ? x_6.y : x_6.x);
+    float enter_t = ((enter < b_4.tmin) ? b_4.tmin : enter);
+    float exit_t = ((tmax_2 < exit) ? tmax_2 : exit);
+    if ((enter_t <= exit_t)) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return uintBitsToFloat(_e27);
+    uint _e49 = F32_INF;
+    return uintBitsToFloat(_e49);
 }
 
 vec2 children_entry(GpuNode n_2, BoxRay b_5, float tmax_3) {
@@ -1283,14 +1288,14 @@ vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_3, float d_1, float trans
     float _e61 = s_1;
     s_1 = min(max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_3 = exp((-(sigma_1) * _e66));
-    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_3) / (1.0 - trans)));
+    float e_4 = exp((-(sigma_1) * _e66));
+    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_4) / (1.0 - trans)));
     float _e76 = s_1;
     float r_3 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
     LightSample _e97 = sample_light_query(i_5, (o + (dir_3 * vec3(_e91))), vec3(0.0));
-    return (_e97.radiance * vec3(((sigma_1 * e_3) / pdf)));
+    return (_e97.radiance * vec3(((sigma_1 * e_4) / pdf)));
 }
 
 vec3 fog_medium(Fog m_4, Ray ray_19, float t, vec3 radiance) {

@@ -883,15 +883,20 @@ float slab_in_frame(float3 lo, float3 hi, BoxRay b_4, float tmax_2)
 {
     float3 t0_ = mad(lo, b_4.step_, b_4.start_lo);
     float3 t1_ = mad(hi, b_4.step_, b_4.start_hi);
-    float3 near_2 = min(t0_, t1_);
-    float3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
-    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if ((enter <= exit)) {
-        return enter;
+    bool3 flip_1 = (asint(b_4.step_) < (int(0)).xxx);
+    float3 near_2 = (flip_1 ? t1_ : t0_);
+    float3 far_2 = (flip_1 ? t0_ : t1_);
+    float2 e_3 = ((near_2.xy < near_2.yz) ? near_2.yz : near_2.xy);
+    float enter = ((e_3.x < e_3.y) ? e_3.y : e_3.x);
+    float2 x_6 = ((far_2.yz < far_2.xy) ? far_2.yz : far_2.xy);
+    float exit = ((x_6.y < x_6.x) ? x_6.y : x_6.x);
+    float enter_t = ((enter < b_4.tmin) ? b_4.tmin : enter);
+    float exit_t = ((tmax_2 < exit) ? tmax_2 : exit);
+    if ((enter_t <= exit_t)) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return asfloat(_e27);
+    uint _e49 = F32_INF;
+    return asfloat(_e49);
 }
 
 float2 children_entry(GpuNode n_2, BoxRay b_5, float tmax_3)
@@ -1602,14 +1607,14 @@ float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_3, float d_1, float
     float _e61 = s_1;
     s_1 = min(max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_3 = exp((-(sigma_1) * _e66));
-    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_3) / (1.0 - trans)));
+    float e_4 = exp((-(sigma_1) * _e66));
+    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_4) / (1.0 - trans)));
     float _e76 = s_1;
     float r_3 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
     const LightSample _e97 = sample_light_query(i_5, (o + (dir_3 * (_e91).xxx)), (0.0).xxx);
-    return (_e97.radiance * (((sigma_1 * e_3) / pdf)).xxx);
+    return (_e97.radiance * (((sigma_1 * e_4) / pdf)).xxx);
 }
 
 float3 fog_medium(Fog m_4, Ray ray_19, float t, float3 radiance)

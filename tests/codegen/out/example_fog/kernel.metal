@@ -865,15 +865,20 @@ float slab_in_frame(
 ) {
     metal::float3 t0_ = metal::fma(lo, b_4.step, b_4.start_lo);
     metal::float3 t1_ = metal::fma(hi, b_4.step, b_4.start_hi);
-    metal::float3 near_2 = metal::min(t0_, t1_);
-    metal::float3 far_2 = metal::max(t0_, t1_);
-    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, b_4.tmin));
-    float exit = metal::min(metal::min(far_2.x, far_2.y), metal::min(far_2.z, tmax_2));
-    if (enter <= exit) {
-        return enter;
+    metal::bool3 flip_1 = as_type<metal::int3>(b_4.step) < metal::int3(0);
+    metal::float3 near_2 = metal::select(t0_, t1_, flip_1);
+    metal::float3 far_2 = metal::select(t1_, t0_, flip_1);
+    metal::float2 e_3 = metal::select(near_2.xy, near_2.yz, near_2.xy < near_2.yz);
+    float enter = (e_3.x < e_3.y) ? e_3.y : e_3.x;
+    metal::float2 x_6 = metal::select(far_2.xy, far_2.yz, far_2.yz < far_2.xy);
+    float exit = (x_6.y < x_6.x) ? x_6.y : x_6.x;
+    float enter_t = (enter < b_4.tmin) ? b_4.tmin : enter;
+    float exit_t = (tmax_2 < exit) ? tmax_2 : exit;
+    if (enter_t <= exit_t) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return as_type<float>(_e27);
+    uint _e49 = F32_INF;
+    return as_type<float>(_e49);
 }
 
 metal::float2 children_entry(
@@ -1796,14 +1801,14 @@ metal::float3 fog_inscatter(
     float _e61 = s_1;
     s_1 = metal::min(metal::max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_3 = metal::exp(-(sigma_1) * _e66);
-    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_3) / (1.0 - trans));
+    float e_4 = metal::exp(-(sigma_1) * _e66);
+    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_4) / (1.0 - trans));
     float _e76 = s_1;
     float r_3 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0);
     float _e91 = s_1;
     LightSample _e97 = sample_light_query(i_5, o + (dir_3 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e97.radiance * metal::float3((sigma_1 * e_3) / pdf);
+    return _e97.radiance * metal::float3((sigma_1 * e_4) / pdf);
 }
 
 metal::float3 fog_medium(

@@ -686,15 +686,20 @@ fn node_box_hi(p_3: vec3<u32>) -> vec3<u32> {
 fn slab_in_frame(lo: vec3<f32>, hi: vec3<f32>, b_4: BoxRay, tmax_2: f32) -> f32 {
     let t0_ = fma(lo, b_4.step, b_4.start_lo);
     let t1_ = fma(hi, b_4.step, b_4.start_hi);
-    let near_2 = min(t0_, t1_);
-    let far_2 = max(t0_, t1_);
-    let enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
-    let exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if (enter <= exit) {
-        return enter;
+    let flip_1 = (bitcast<vec3<i32>>(b_4.step) < vec3(0i));
+    let near_2 = select(t0_, t1_, flip_1);
+    let far_2 = select(t1_, t0_, flip_1);
+    let e_3 = select(near_2.xy, near_2.yz, (near_2.xy < near_2.yz));
+    let enter = select(e_3.x, e_3.y, (e_3.x < e_3.y));
+    let x_6 = select(far_2.xy, far_2.yz, (far_2.yz < far_2.xy));
+    let exit = select(x_6.x, x_6.y, (x_6.y < x_6.x));
+    let enter_t = select(enter, b_4.tmin, (enter < b_4.tmin));
+    let exit_t = select(exit, tmax_2, (tmax_2 < exit));
+    if (enter_t <= exit_t) {
+        return enter_t;
     }
-    let _e27 = F32_INF;
-    return bitcast<f32>(_e27);
+    let _e49 = F32_INF;
+    return bitcast<f32>(_e49);
 }
 
 fn children_entry(n_2: GpuNode, b_5: BoxRay, tmax_3: f32) -> vec2<f32> {
@@ -1297,14 +1302,14 @@ fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d_1: f32, t
     let _e61 = s_1;
     s_1 = min(max(_e61, 0f), d_1);
     let _e66 = s_1;
-    let e_3 = exp((-(sigma_1) * _e66));
-    let p_free = select(((sigma_1 * e_3) / (1f - trans)), (1f / d_1), tiny_1);
+    let e_4 = exp((-(sigma_1) * _e66));
+    let p_free = select(((sigma_1 * e_4) / (1f - trans)), (1f / d_1), tiny_1);
     let _e76 = s_1;
     let r_3 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))), equi));
     let _e91 = s_1;
     let _e97 = sample_light_query(i_5, (o + (dir_3 * vec3(_e91))), vec3(0f));
-    return (_e97.radiance * vec3(((sigma_1 * e_3) / pdf)));
+    return (_e97.radiance * vec3(((sigma_1 * e_4) / pdf)));
 }
 
 fn fog_medium(m_4: Fog, ray_19: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {

@@ -835,15 +835,20 @@ uvec3 node_box_hi(uvec3 p_3) {
 float slab_in_frame(vec3 lo, vec3 hi, BoxRay b_5, float tmax_2) {
     vec3 t0_ = fma(lo, b_5.step_, b_5.start_lo);
     vec3 t1_ = fma(hi, b_5.step_, b_5.start_hi);
-    vec3 near_2 = min(t0_, t1_);
-    vec3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_5.tmin));
-    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if ((enter <= exit)) {
-        return enter;
+    bvec3 flip_1 = lessThan(floatBitsToInt(b_5.step_), ivec3(0));
+    vec3 near_2 = mix(t0_, t1_, flip_1);
+    vec3 far_2 = mix(t1_, t0_, flip_1);
+    vec2 e_3 = mix(near_2.xy, near_2.yz, lessThan(near_2.xy, near_2.yz));
+    float enter = ((e_3.x < e_3.y) ? e_3.y : e_3.x);
+    vec2 x_8 = mix(far_2.xy, far_2.yz, lessThan(far_2.yz, far_2.xy));
+    float exit = ((x_8.y < x_8.x) ? x_8.y : x_8.x);
+    float enter_t = ((enter < b_5.tmin) ? b_5.tmin : enter);
+    float exit_t = ((tmax_2 < exit) ? tmax_2 : exit);
+    if ((enter_t <= exit_t)) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return uintBitsToFloat(_e27);
+    uint _e49 = F32_INF;
+    return uintBitsToFloat(_e49);
 }
 
 vec2 children_entry(GpuNode n_3, BoxRay b_6, float tmax_3) {

@@ -1074,15 +1074,20 @@ float slab_in_frame(float3 lo, float3 hi, BoxRay b_5, float tmax_2)
 {
     float3 t0_ = mad(lo, b_5.step_, b_5.start_lo);
     float3 t1_ = mad(hi, b_5.step_, b_5.start_hi);
-    float3 near_2 = min(t0_, t1_);
-    float3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_5.tmin));
-    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if ((enter <= exit)) {
-        return enter;
+    bool3 flip_1 = (asint(b_5.step_) < (int(0)).xxx);
+    float3 near_2 = (flip_1 ? t1_ : t0_);
+    float3 far_2 = (flip_1 ? t0_ : t1_);
+    float2 e_3 = ((near_2.xy < near_2.yz) ? near_2.yz : near_2.xy);
+    float enter = ((e_3.x < e_3.y) ? e_3.y : e_3.x);
+    float2 x_8 = ((far_2.yz < far_2.xy) ? far_2.yz : far_2.xy);
+    float exit = ((x_8.y < x_8.x) ? x_8.y : x_8.x);
+    float enter_t = ((enter < b_5.tmin) ? b_5.tmin : enter);
+    float exit_t = ((tmax_2 < exit) ? tmax_2 : exit);
+    if ((enter_t <= exit_t)) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return asfloat(_e27);
+    uint _e49 = F32_INF;
+    return asfloat(_e49);
 }
 
 float2 children_entry(GpuNode n_3, BoxRay b_6, float tmax_3)

@@ -1089,15 +1089,20 @@ float slab_in_frame(
 ) {
     metal::float3 t0_ = metal::fma(lo, b_5.step, b_5.start_lo);
     metal::float3 t1_ = metal::fma(hi, b_5.step, b_5.start_hi);
-    metal::float3 near_2 = metal::min(t0_, t1_);
-    metal::float3 far_2 = metal::max(t0_, t1_);
-    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, b_5.tmin));
-    float exit = metal::min(metal::min(far_2.x, far_2.y), metal::min(far_2.z, tmax_2));
-    if (enter <= exit) {
-        return enter;
+    metal::bool3 flip_1 = as_type<metal::int3>(b_5.step) < metal::int3(0);
+    metal::float3 near_2 = metal::select(t0_, t1_, flip_1);
+    metal::float3 far_2 = metal::select(t1_, t0_, flip_1);
+    metal::float2 e_3 = metal::select(near_2.xy, near_2.yz, near_2.xy < near_2.yz);
+    float enter = (e_3.x < e_3.y) ? e_3.y : e_3.x;
+    metal::float2 x_8 = metal::select(far_2.xy, far_2.yz, far_2.yz < far_2.xy);
+    float exit = (x_8.y < x_8.x) ? x_8.y : x_8.x;
+    float enter_t = (enter < b_5.tmin) ? b_5.tmin : enter;
+    float exit_t = (tmax_2 < exit) ? tmax_2 : exit;
+    if (enter_t <= exit_t) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return as_type<float>(_e27);
+    uint _e49 = F32_INF;
+    return as_type<float>(_e49);
 }
 
 metal::float2 children_entry(

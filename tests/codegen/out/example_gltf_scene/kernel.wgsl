@@ -850,15 +850,20 @@ fn node_box_hi(p_3: vec3<u32>) -> vec3<u32> {
 fn slab_in_frame(lo: vec3<f32>, hi: vec3<f32>, b_5: BoxRay, tmax_2: f32) -> f32 {
     let t0_ = fma(lo, b_5.step, b_5.start_lo);
     let t1_ = fma(hi, b_5.step, b_5.start_hi);
-    let near_2 = min(t0_, t1_);
-    let far_2 = max(t0_, t1_);
-    let enter = max(max(near_2.x, near_2.y), max(near_2.z, b_5.tmin));
-    let exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if (enter <= exit) {
-        return enter;
+    let flip_1 = (bitcast<vec3<i32>>(b_5.step) < vec3(0i));
+    let near_2 = select(t0_, t1_, flip_1);
+    let far_2 = select(t1_, t0_, flip_1);
+    let e_3 = select(near_2.xy, near_2.yz, (near_2.xy < near_2.yz));
+    let enter = select(e_3.x, e_3.y, (e_3.x < e_3.y));
+    let x_8 = select(far_2.xy, far_2.yz, (far_2.yz < far_2.xy));
+    let exit = select(x_8.x, x_8.y, (x_8.y < x_8.x));
+    let enter_t = select(enter, b_5.tmin, (enter < b_5.tmin));
+    let exit_t = select(exit, tmax_2, (tmax_2 < exit));
+    if (enter_t <= exit_t) {
+        return enter_t;
     }
-    let _e27 = F32_INF;
-    return bitcast<f32>(_e27);
+    let _e49 = F32_INF;
+    return bitcast<f32>(_e49);
 }
 
 fn children_entry(n_3: GpuNode, b_6: BoxRay, tmax_3: f32) -> vec2<f32> {

@@ -497,15 +497,20 @@ fn node_box_hi(p_1: vec3<u32>) -> vec3<u32> {
 fn slab_in_frame(lo: vec3<f32>, hi: vec3<f32>, b_4: BoxRay, tmax_2: f32) -> f32 {
     let t0_ = fma(lo, b_4.step, b_4.start_lo);
     let t1_ = fma(hi, b_4.step, b_4.start_hi);
-    let near_2 = min(t0_, t1_);
-    let far_2 = max(t0_, t1_);
-    let enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
-    let exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if (enter <= exit) {
-        return enter;
+    let flip_1 = (bitcast<vec3<i32>>(b_4.step) < vec3(0i));
+    let near_2 = select(t0_, t1_, flip_1);
+    let far_2 = select(t1_, t0_, flip_1);
+    let e_1 = select(near_2.xy, near_2.yz, (near_2.xy < near_2.yz));
+    let enter = select(e_1.x, e_1.y, (e_1.x < e_1.y));
+    let x_5 = select(far_2.xy, far_2.yz, (far_2.yz < far_2.xy));
+    let exit = select(x_5.x, x_5.y, (x_5.y < x_5.x));
+    let enter_t = select(enter, b_4.tmin, (enter < b_4.tmin));
+    let exit_t = select(exit, tmax_2, (tmax_2 < exit));
+    if (enter_t <= exit_t) {
+        return enter_t;
     }
-    let _e27 = F32_INF;
-    return bitcast<f32>(_e27);
+    let _e49 = F32_INF;
+    return bitcast<f32>(_e49);
 }
 
 fn children_entry(n: GpuNode, b_5: BoxRay, tmax_3: f32) -> vec2<f32> {
@@ -673,15 +678,15 @@ fn mesh_error(inst_4: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f
     let r2_ = abs(inst_4.object_to_world_2_);
     let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
-    let e_1 = (rounding + carried);
-    return max(max(e_1.x, e_1.y), e_1.z);
+    let e_2 = (rounding + carried);
+    return max(max(e_2.x, e_2.y), e_2.z);
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n_1: vec3<f32>;
 
-    let e_2 = unpack2x16snorm(bits);
-    n_1 = vec3<f32>(e_2.x, e_2.y, ((1f - abs(e_2.x)) - abs(e_2.y)));
+    let e_3 = unpack2x16snorm(bits);
+    n_1 = vec3<f32>(e_3.x, e_3.y, ((1f - abs(e_3.x)) - abs(e_3.y)));
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;

@@ -627,15 +627,20 @@ float slab_in_frame(float3 lo, float3 hi, BoxRay b_4, float tmax_2)
 {
     float3 t0_ = mad(lo, b_4.step_, b_4.start_lo);
     float3 t1_ = mad(hi, b_4.step_, b_4.start_hi);
-    float3 near_2 = min(t0_, t1_);
-    float3 far_2 = max(t0_, t1_);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
-    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if ((enter <= exit)) {
-        return enter;
+    bool3 flip_1 = (asint(b_4.step_) < (int(0)).xxx);
+    float3 near_2 = (flip_1 ? t1_ : t0_);
+    float3 far_2 = (flip_1 ? t0_ : t1_);
+    float2 e_1 = ((near_2.xy < near_2.yz) ? near_2.yz : near_2.xy);
+    float enter = ((e_1.x < e_1.y) ? e_1.y : e_1.x);
+    float2 x_5 = ((far_2.yz < far_2.xy) ? far_2.yz : far_2.xy);
+    float exit = ((x_5.y < x_5.x) ? x_5.y : x_5.x);
+    float enter_t = ((enter < b_4.tmin) ? b_4.tmin : enter);
+    float exit_t = ((tmax_2 < exit) ? tmax_2 : exit);
+    if ((enter_t <= exit_t)) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return asfloat(_e27);
+    uint _e49 = F32_INF;
+    return asfloat(_e49);
 }
 
 float2 children_entry(GpuNode n, BoxRay b_5, float tmax_3)
@@ -860,16 +865,16 @@ float mesh_error(GpuInstance inst_4, float3 v0_, float3 db1_, float3 db2_, float
     float4 r2_ = abs(inst_4.object_to_world_2_);
     float3 rounding = ((GAMMA_4_).xxx * float3(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     float3 carried = (((1.0 + GAMMA_4_)).xxx * float3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
-    float3 e_1 = (rounding + carried);
-    return max(max(e_1.x, e_1.y), e_1.z);
+    float3 e_2 = (rounding + carried);
+    return max(max(e_2.x, e_2.y), e_2.z);
 }
 
 float3 decode_octahedral(uint bits)
 {
     float3 n_1 = (float3)0;
 
-    float2 e_2 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n_1 = float3(e_2.x, e_2.y, ((1.0 - abs(e_2.x)) - abs(e_2.y)));
+    float2 e_3 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n_1 = float3(e_3.x, e_3.y, ((1.0 - abs(e_3.x)) - abs(e_3.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;

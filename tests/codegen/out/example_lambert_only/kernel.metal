@@ -621,15 +621,20 @@ float slab_in_frame(
 ) {
     metal::float3 t0_ = metal::fma(lo, b_4.step, b_4.start_lo);
     metal::float3 t1_ = metal::fma(hi, b_4.step, b_4.start_hi);
-    metal::float3 near_2 = metal::min(t0_, t1_);
-    metal::float3 far_2 = metal::max(t0_, t1_);
-    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, b_4.tmin));
-    float exit = metal::min(metal::min(far_2.x, far_2.y), metal::min(far_2.z, tmax_2));
-    if (enter <= exit) {
-        return enter;
+    metal::bool3 flip_1 = as_type<metal::int3>(b_4.step) < metal::int3(0);
+    metal::float3 near_2 = metal::select(t0_, t1_, flip_1);
+    metal::float3 far_2 = metal::select(t1_, t0_, flip_1);
+    metal::float2 e_1 = metal::select(near_2.xy, near_2.yz, near_2.xy < near_2.yz);
+    float enter = (e_1.x < e_1.y) ? e_1.y : e_1.x;
+    metal::float2 x_5 = metal::select(far_2.xy, far_2.yz, far_2.yz < far_2.xy);
+    float exit = (x_5.y < x_5.x) ? x_5.y : x_5.x;
+    float enter_t = (enter < b_4.tmin) ? b_4.tmin : enter;
+    float exit_t = (tmax_2 < exit) ? tmax_2 : exit;
+    if (enter_t <= exit_t) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return as_type<float>(_e27);
+    uint _e49 = F32_INF;
+    return as_type<float>(_e49);
 }
 
 metal::float2 children_entry(
@@ -851,16 +856,16 @@ float mesh_error(
     metal::float4 r2_ = metal::abs(inst_4.object_to_world_2_);
     metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
     metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
-    metal::float3 e_1 = rounding + carried;
-    return metal::max(metal::max(e_1.x, e_1.y), e_1.z);
+    metal::float3 e_2 = rounding + carried;
+    return metal::max(metal::max(e_2.x, e_2.y), e_2.z);
 }
 
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n_1 = {};
-    metal::float2 e_2 = metal::unpack_snorm2x16_to_float(bits);
-    n_1 = metal::float3(e_2.x, e_2.y, (1.0 - metal::abs(e_2.x)) - metal::abs(e_2.y));
+    metal::float2 e_3 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_3.x, e_3.y, (1.0 - metal::abs(e_3.x)) - metal::abs(e_3.y));
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;

@@ -536,15 +536,20 @@ uvec3 node_box_hi(uvec3 p_1) {
 float slab_in_frame(vec3 lo, vec3 hi, BoxRay b_4, float tmax_2) {
     vec3 t0_ = fma(lo, b_4.step_, b_4.start_lo);
     vec3 t1_1 = fma(hi, b_4.step_, b_4.start_hi);
-    vec3 near_2 = min(t0_, t1_1);
-    vec3 far_2 = max(t0_, t1_1);
-    float enter = max(max(near_2.x, near_2.y), max(near_2.z, b_4.tmin));
-    float exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_2));
-    if ((enter <= exit)) {
-        return enter;
+    bvec3 flip_1 = lessThan(floatBitsToInt(b_4.step_), ivec3(0));
+    vec3 near_2 = mix(t0_, t1_1, flip_1);
+    vec3 far_2 = mix(t1_1, t0_, flip_1);
+    vec2 e_1 = mix(near_2.xy, near_2.yz, lessThan(near_2.xy, near_2.yz));
+    float enter = ((e_1.x < e_1.y) ? e_1.y : e_1.x);
+    vec2 x_5 = mix(far_2.xy, far_2.yz, lessThan(far_2.yz, far_2.xy));
+    float exit = ((x_5.y < x_5.x) ? x_5.y : x_5.x);
+    float enter_t = ((enter < b_4.tmin) ? b_4.tmin : enter);
+    float exit_t = ((tmax_2 < exit) ? tmax_2 : exit);
+    if ((enter_t <= exit_t)) {
+        return enter_t;
     }
-    uint _e27 = F32_INF;
-    return uintBitsToFloat(_e27);
+    uint _e49 = F32_INF;
+    return uintBitsToFloat(_e49);
 }
 
 vec2 children_entry(GpuNode n, BoxRay b_5, float tmax_3) {
@@ -772,14 +777,14 @@ float mesh_error(GpuInstance inst_4, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_3) {
     vec4 r2_1 = abs(inst_4.object_to_world_2_);
     vec3 rounding = (vec3(GAMMA_4_) * vec3(dot(r0_, q_3), dot(r1_, q_3), dot(r2_1, q_3)));
     vec3 carried = (vec3((1.0 + GAMMA_4_)) * vec3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_1.xyz, obj)));
-    vec3 e_1 = (rounding + carried);
-    return max(max(e_1.x, e_1.y), e_1.z);
+    vec3 e_2 = (rounding + carried);
+    return max(max(e_2.x, e_2.y), e_2.z);
 }
 
 vec3 decode_octahedral(uint bits) {
     vec3 n_1 = vec3(0.0);
-    vec2 e_2 = unpackSnorm2x16(bits);
-    n_1 = vec3(e_2.x, e_2.y, ((1.0 - abs(e_2.x)) - abs(e_2.y)));
+    vec2 e_3 = unpackSnorm2x16(bits);
+    n_1 = vec3(e_3.x, e_3.y, ((1.0 - abs(e_3.x)) - abs(e_3.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
@@ -1422,11 +1427,11 @@ bool after_nee_bounce(Ray ray_15) {
 }
 
 float bounce_pdf(Ray ray_16) {
-    float x_5 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
-    if (!((x_5 > -0.25))) {
+    float x_6 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
+    if (!((x_6 > -0.25))) {
         return 0.0;
     }
-    return (exp((max(x_5, 0.0) * 90.0)) - 1.0);
+    return (exp((max(x_6, 0.0) * 90.0)) - 1.0);
 }
 
 vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2) {
@@ -1684,8 +1689,8 @@ vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
 }
 
 vec3 mis_bounce_dir(vec3 dir_4, float pdf) {
-    float x_6 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_4 * vec3((MIS_BOUNCE_LENGTH + x_6)));
+    float x_7 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir_4 * vec3((MIS_BOUNCE_LENGTH + x_7)));
 }
 
 void rt_spawn(vec3 dir_5, vec3 weight) {
