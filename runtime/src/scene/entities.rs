@@ -347,7 +347,9 @@ pub struct Entities {
     blas_nodes: u32,
     triangles: Vec<[f32; 4]>,
     attributes: Vec<[u32; 4]>,
-    texels: Vec<u32>,
+    /// Shared with the asset store, which hands the same words to a rebuild over the same
+    /// textures (`AssetStore::texels`).
+    texels: Arc<[u32]>,
     tlas_order: Option<Vec<u32>>,
     /// The TLAS root's exact box (the header's quantisation frame is a little larger).
     tlas_bounds: Aabb,
@@ -625,7 +627,8 @@ impl Entities {
 
         // 4. Texels: 8-bit sRGB textures decoded to half floats while they fit the budget (the
         //    store keeps each decoded copy for the next build).
-        let mut texels = Vec::new();
+        let mut texel_words = 0usize;
+        let mut parts = Vec::with_capacity(cache.textures.len());
         let mut textures = Vec::with_capacity(cache.textures.len());
         let budget = match options.srgb_textures {
             SrgbTextures::Decoded => LINEAR_TEXEL_BUDGET,
@@ -647,18 +650,20 @@ impl Entities {
                 None
             };
             stats.decoded_textures += u32::from(decoded.is_some());
-            let data = decoded.as_ref().unwrap_or(data);
+            let data = decoded.unwrap_or_else(|| Arc::clone(data));
             textures.push(TextureEntity {
                 source: key.describe(),
                 width: data.width,
                 height: data.height,
                 format: data.format,
-                texel_base: to_u32("texel words", texels.len())?,
+                texel_base: to_u32("texel words", texel_words)?,
                 sampler: data.sampler,
             });
-            texels.extend_from_slice(&data.words);
+            texel_words += data.words.len();
+            parts.push(data);
         }
-        to_u32("texel words", texels.len())?;
+        to_u32("texel words", texel_words)?;
+        let texels = cache.store.texels(&parts);
 
         // 5. params: records, instances, light table.
         let start = Instant::now();
@@ -1017,7 +1022,7 @@ impl Entities {
         if self.attributes == old.attributes {
             self.versions.attributes = ov.attributes;
         }
-        if self.texels == old.texels {
+        if Arc::ptr_eq(&self.texels, &old.texels) || self.texels == old.texels {
             self.versions.texels = ov.texels;
         }
         if self.params == old.params {

@@ -9,7 +9,9 @@
 //! content, and the entry (and its object-level BVH) is kept under the new stamp; new content,
 //! and it is loaded again. Object-level BVHs are keyed by mesh, content and builder preset, and
 //! the decoded copies of 8-bit sRGB textures (`scene::SrgbTextures`) by the texture they were
-//! decoded from, so an unchanged texture is decoded once over any number of rebuilds.
+//! decoded from, so an unchanged texture is decoded once over any number of rebuilds. The last
+//! build's `texels` (every texture's words, concatenated) is kept with the textures it was made
+//! of, so a rebuild over the same textures shares it instead of copying and comparing it.
 //!
 //! Invariants: the store never holds data of a file whose current stamp differs from the one it
 //! was read with (every lookup compares stamps first); counters only grow, so a caller can tell
@@ -107,9 +109,14 @@ pub struct StoreCounters {
     pub blas_builds: u32,
     /// 8-bit sRGB textures decoded to linear half floats (`TextureData::decoded_srgb`).
     pub textures_decoded: u32,
+    /// Concatenations of the textures' words into a scene's `texels` ([`AssetStore::texels`]).
+    pub texel_concatenations: u32,
     /// Lookups answered from the store.
     pub reused: u32,
 }
+
+/// A scene's `texels` and the textures they concatenate, in order.
+type Texels = (Vec<Arc<TextureData>>, Arc<[u32]>);
 
 /// Assets and object-level BVHs kept across entity builds (see the module docs).
 #[derive(Debug, Default)]
@@ -122,6 +129,8 @@ pub struct AssetStore {
     /// Textures stored decoded, each with the texture it was decoded from (kept alive, so the
     /// same allocation is the same data).
     decoded: HashMap<TextureKey, (Arc<TextureData>, Arc<TextureData>)>,
+    /// The last `texels` made, with the textures it concatenates (kept alive, as above).
+    texels: Option<Texels>,
     counters: StoreCounters,
 }
 
@@ -339,6 +348,27 @@ impl AssetStore {
         self.decoded
             .insert(key.clone(), (Arc::clone(data), Arc::clone(&decoded)));
         Some(decoded)
+    }
+
+    /// The words of `parts`, concatenated in order: the last concatenation when `parts` are the
+    /// very textures it was made of, else made now and kept in its place.
+    pub(super) fn texels(&mut self, parts: &[Arc<TextureData>]) -> Arc<[u32]> {
+        if let Some((made_of, texels)) = &self.texels {
+            if made_of.len() == parts.len()
+                && made_of.iter().zip(parts).all(|(a, b)| Arc::ptr_eq(a, b))
+            {
+                self.counters.reused += 1;
+                return Arc::clone(texels);
+            }
+        }
+        let mut words = Vec::with_capacity(parts.iter().map(|p| p.words.len()).sum());
+        for part in parts {
+            words.extend_from_slice(&part.words);
+        }
+        let texels: Arc<[u32]> = words.into();
+        self.counters.texel_concatenations += 1;
+        self.texels = Some((parts.to_vec(), Arc::clone(&texels)));
+        texels
     }
 
     /// Stores an object-level BVH just built.

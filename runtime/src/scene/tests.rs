@@ -876,8 +876,9 @@ scene s {{
 }
 
 /// A store keeps what it decoded: rebuilding the entities of an unchanged scene (what
-/// `Renderer::replace_kernel` does after a program edit) decodes no texture again and stores the
-/// same texels; a new image in the same file is decoded once more.
+/// `Renderer::replace_kernel` does after a program edit) decodes no texture again and shares the
+/// same texels (one allocation, not a copy); a new image in the same file is decoded and
+/// concatenated once more.
 #[test]
 fn a_store_decodes_an_unchanged_srgb_texture_once_over_rebuilds() {
     let dir = std::env::temp_dir().join(format!("rtc_srgb_store_{}", std::process::id()));
@@ -894,24 +895,31 @@ fn a_store_decodes_an_unchanged_srgb_texture_once_over_rebuilds() {
         let e = Entities::build_with_store(&p, &p.scenes[l.scene], &l, &options, store)
             .expect("entities");
         assert_eq!(e.stats().decoded_textures, 1, "stored decoded");
-        e.texels().to_vec()
+        (e.texels().to_vec(), e.texels().as_ptr() as usize)
     };
-    let first = build(&mut store);
+    let (first, at) = build(&mut store);
     assert_eq!(store.counters().textures_decoded, 1);
+    assert_eq!(store.counters().texel_concatenations, 1);
     let image = crate::assets::load_image(dir.join("t.png")).unwrap();
     assert_eq!(first, image.decoded_srgb().unwrap().words);
     for _ in 0..2 {
-        assert_eq!(build(&mut store), first, "the same texels");
+        assert_eq!(
+            build(&mut store),
+            (first.clone(), at),
+            "the same texels, shared"
+        );
         assert_eq!(store.counters().textures_decoded, 1, "not decoded again");
+        assert_eq!(store.counters().texel_concatenations, 1, "not copied again");
     }
     // A new image (three texels, so the file's length changes) is read and decoded again.
     save(vec![10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120], 3);
-    let edited = build(&mut store);
+    let (edited, _) = build(&mut store);
     assert_eq!(
         store.counters().textures_decoded,
         2,
         "the new image decoded"
     );
+    assert_eq!(store.counters().texel_concatenations, 2);
     let image = crate::assets::load_image(dir.join("t.png")).unwrap();
     assert_eq!(edited, image.decoded_srgb().unwrap().words);
     let _ = std::fs::remove_dir_all(&dir);
