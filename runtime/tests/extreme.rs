@@ -46,35 +46,22 @@ fn render(gpu: &Gpu, compiled: &CompiledScene, what: &str) -> (LinearImage, Rend
     render_with(gpu, compiled, RenderOptions::default(), what)
 }
 
-/// [`render`] with `options`.
+/// [`render`] with `options` (`common::scene::render`, which also checks the kernel's count of
+/// non-finite samples), with the scene's sizes printed.
 fn render_with(
     gpu: &Gpu,
     compiled: &CompiledScene,
     options: RenderOptions,
     what: &str,
 ) -> (LinearImage, RenderStats) {
-    let mut renderer = Renderer::new(gpu, compiled, options).expect("renderer");
-    let result = renderer.render(&mut |_, _| {}).expect("render");
-    let s = result.stats;
+    let (image, s) = common::scene::render(gpu, compiled, options, what);
     eprintln!(
-        "{what}: {}x{} x {} spp, {} triangles ({} instanced), BVH {:.0} ms, pipelines {:.0} ms, \
-         render {:.0} ms",
-        s.width,
-        s.height,
-        s.samples,
-        s.triangles,
-        s.instanced_triangles,
-        s.bvh_build_ms,
-        s.pipeline_ms,
-        s.render_ms
+        "{what}: {} triangles ({} instanced), BVH {:.0} ms",
+        s.triangles, s.instanced_triangles, s.bvh_build_ms
     );
-    assert_eq!(
-        s.nonfinite_samples, 0,
-        "{what}: the kernel counted non-finite samples"
-    );
-    let bad = result.image.count_nonfinite();
+    let bad = image.count_nonfinite();
     assert_eq!(bad, 0, "{what}: {bad} non-finite channels in the image");
-    (result.image, s)
+    (image, s)
 }
 
 /// The pixel `(x, y)` as RGB.
