@@ -109,7 +109,7 @@ pub struct StoreCounters {
     pub blas_builds: u32,
     /// 8-bit sRGB textures decoded to linear half floats (`TextureData::decoded_srgb`).
     pub textures_decoded: u32,
-    /// Concatenations of the textures' words into a scene's `texels` ([`AssetStore::texels`]).
+    /// Concatenations of the textures' words into a scene's `texels` (the store keeps the last).
     pub texel_concatenations: u32,
     /// Lookups answered from the store.
     pub reused: u32,
