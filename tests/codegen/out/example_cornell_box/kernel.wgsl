@@ -158,6 +158,7 @@ const NODE_LEAF_BIT: u32 = 2147483648u;
 const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
+const HAS_ANY_HIT: bool = false;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 6u;
 const POINT_ERROR: f32 = 0.0000019073486f;
@@ -454,13 +455,13 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
-    let _e8 = triangles[(slot * 3u)];
-    let a_4 = (_e8.xyz - r_1.origin);
-    let _e18 = triangles[((slot * 3u) + 1u)];
-    let b_6 = (_e18.xyz - r_1.origin);
-    let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_5 = (_e28.xyz - r_1.origin);
+fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
+    let _e9 = triangles[(slot * 3u)];
+    let a_4 = (_e9.xyz - r_1.origin);
+    let _e19 = triangles[((slot * 3u) + 1u)];
+    let b_6 = (_e19.xyz - r_1.origin);
+    let _e29 = triangles[((slot * 3u) + 2u)];
+    let c_5 = (_e29.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
@@ -472,11 +473,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u + v_2) + w);
+    let scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
+    if occlusion {
+        let sign_ = (bitcast<u32>(det) & 2147483648u);
+        let st = bitcast<f32>((bitcast<u32>(scaled) ^ sign_));
+        let ad_1 = abs(det);
+        let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        let _e180 = F32_INF;
+        return select(vec3<f32>(bitcast<f32>(_e180), 0f, 0f), vec3<f32>(tmax_1, 0f, 0f), hit_7);
+    }
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_7);
+    let t_4 = (scaled * rcp);
+    let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    let _e204 = F32_INF;
+    return select(vec3<f32>(bitcast<f32>(_e204), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_8);
 }
 
 fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
@@ -563,76 +573,76 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                 let _e43 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e43);
                 let _e47 = best.t;
-                let _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                let _e51 = F32_INF;
-                if (_e48.x < bitcast<f32>(_e51)) {
-                    let _e60 = triangles[((prim * 3u) + 1u)];
-                    let tag = bitcast<u32>(_e60.w);
+                let _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                let _e54 = F32_INF;
+                if (_e51.x < bitcast<f32>(_e54)) {
+                    let _e63 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e63.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_6 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0f));
-                    let _e75 = accept(inst_2, world_ray, c_6);
-                    if _e75 {
+                    let c_6 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0f));
+                    let _e78 = accept(inst_2, world_ray, c_6);
+                    if _e78 {
                         best = c_6;
                         if shadow {
-                            let _e76 = best;
-                            return _e76;
+                            let _e79 = best;
+                            return _e79;
                         }
                     }
                 }
                 continuing {
-                    let _e77 = k;
-                    k = (_e77 + 1u);
+                    let _e80 = k;
+                    k = (_e80 + 1u);
                 }
             }
         } else {
-            let _e80 = child;
-            let n_6 = nodes[(base_1 + _e80)];
-            let _e86 = best.t;
-            let _e87 = children_entry(n_6, _e17, _e86);
-            let tl = _e87.x;
-            let tr = _e87.y;
-            let _e91 = F32_INF;
-            let _e95 = F32_INF;
-            if ((tl < bitcast<f32>(_e91)) && (tr < bitcast<f32>(_e95))) {
+            let _e83 = child;
+            let n_6 = nodes[(base_1 + _e83)];
+            let _e89 = best.t;
+            let _e90 = children_entry(n_6, _e17, _e89);
+            let tl = _e90.x;
+            let tr = _e90.y;
+            let _e94 = F32_INF;
+            let _e98 = F32_INF;
+            if ((tl < bitcast<f32>(_e94)) && (tr < bitcast<f32>(_e98))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                let _e107 = sp_1;
-                if (_e107 < BLAS_STACK) {
-                    let _e111 = sp_1;
-                    let _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 69u)] = _e113;
-                    let _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                let _e110 = sp_1;
+                if (_e110 < BLAS_STACK) {
+                    let _e114 = sp_1;
+                    let _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 69u)] = _e116;
+                    let _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                let _e121 = near;
-                child = _e121;
+                let _e124 = near;
+                child = _e124;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (tl < bitcast<f32>(_e123)) {
+            let _e126 = F32_INF;
+            if (tl < bitcast<f32>(_e126)) {
                 child = n_6.a;
                 continue;
             }
-            let _e128 = F32_INF;
-            if (tr < bitcast<f32>(_e128)) {
+            let _e131 = F32_INF;
+            if (tr < bitcast<f32>(_e131)) {
                 child = n_6.b;
                 continue;
             }
         }
-        let _e133 = sp_1;
-        let _e134 = pop(TLAS_STACK, _e133);
-        if (_e134.x == NO_HIT) {
+        let _e136 = sp_1;
+        let _e137 = pop(TLAS_STACK, _e136);
+        if (_e137.x == NO_HIT) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    let _e140 = best;
-    return _e140;
+    let _e143 = best;
+    return _e143;
 }
 
 fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
@@ -1352,11 +1362,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_6 = stack[min(top_1, 0u)].next;
             stack[min(top_1, 0u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 0u)].ray;
-            let hit_8 = stack[min(top_1, 0u)].hit;
+            let hit_9 = stack[min(top_1, 0u)].hit;
             let dir_6 = stack[min(top_1, 0u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 0u)].error;
-            let _e284 = spawn_origin(hit_8, _e283, dir_6);
+            let _e284 = spawn_origin(hit_9, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
             ray_18 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);

@@ -151,6 +151,7 @@ const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
+const bool HAS_ANY_HIT = true;
 const uint FLAG_ANY_HIT = 1u;
 const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
@@ -173,7 +174,6 @@ const uint SCRATCH_SHADOW_MODE = 14u;
 const uint SHADOW_UNOCCLUDED = 1u;
 const uint SHADOW_ABOVE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
-const bool HAS_ANY_HIT = true;
 const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
 const uint SHADOW_TRACED = 0u;
@@ -462,13 +462,13 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
-    vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a_4 = (_e8.xyz - r_1.origin);
-    vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_6 = (_e18.xyz - r_1.origin);
-    vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_5 = (_e28.xyz - r_1.origin);
+vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
+    vec4 _e9 = _group_0_binding_4_cs[(slot * 3u)];
+    vec3 a_4 = (_e9.xyz - r_1.origin);
+    vec4 _e19 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
+    vec3 b_6 = (_e19.xyz - r_1.origin);
+    vec4 _e29 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
+    vec3 c_5 = (_e29.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
@@ -480,11 +480,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
+    if (occlusion) {
+        uint sign_ = (floatBitsToUint(det) & 2147483648u);
+        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_11 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+    }
     float rcp = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_11 ? vec3(t_5, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    float t_5 = (scaled * rcp);
+    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_12 ? vec3(t_5, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
 }
 
 float point_error(vec3 origin_2, vec3 along) {
@@ -738,8 +747,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -749,72 +758,72 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                vec3 _e48 = hit_triangle(_e7, prim, ray_7.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < uintBitsToFloat(_e51))) {
-                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e60.w);
+                vec3 _e51 = hit_triangle(_e7, prim, ray_7.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < uintBitsToFloat(_e54))) {
+                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_5.object + tag) - 1u) : slot_2);
-                    Candidate c_6 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
-                    bool _e75 = accept(inst_5, world_ray, c_6);
-                    if (_e75) {
+                    Candidate c_6 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
+                    bool _e78 = accept(inst_5, world_ray, c_6);
+                    if (_e78) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e80)];
-            float _e86 = best.t;
-            vec2 _e87 = children_entry(n_6, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e83)];
+            float _e89 = best.t;
+            vec2 _e90 = children_entry(n_6, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 73u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 73u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < uintBitsToFloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < uintBitsToFloat(_e126))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < uintBitsToFloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < uintBitsToFloat(_e131))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        uvec2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        uvec2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1) {
@@ -1583,10 +1592,10 @@ vec3 trace(Ray camera_ray) {
             uint i_9 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_9 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
-            Hit hit_12 = stack[min(top_1, 2u)].hit;
+            Hit hit_13 = stack[min(top_1, 2u)].hit;
             vec3 dir_8 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
             medium_2 = parent.medium;
-            if ((dot(dir_8, hit_12.geometric_normal) < 0.0)) {
+            if ((dot(dir_8, hit_13.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(top_1, 2u)].slot;
                 medium_2 = (_e289 + 1u);
             } else {
@@ -1620,7 +1629,7 @@ vec3 trace(Ray camera_ray) {
                     bool _e353 = found;
                     if (!(_e353)) {
                         float _e359 = stack[min(top_1, 2u)].error;
-                        vec3 _e360 = spawn_origin(hit_12, _e359, dir_8);
+                        vec3 _e360 = spawn_origin(hit_13, _e359, dir_8);
                         uint _e365 = stack[min(top_1, 2u)].slot;
                         uint _e366 = medium_at(_e360, _e365);
                         medium_2 = _e366;
@@ -1628,7 +1637,7 @@ vec3 trace(Ray camera_ray) {
                 }
             }
             float _e371 = stack[min(top_1, 2u)].error;
-            vec3 _e372 = spawn_origin(hit_12, _e371, dir_8);
+            vec3 _e372 = spawn_origin(hit_13, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
             ray_24 = Ray(_e372, 0.0, dir_8, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);

@@ -200,6 +200,7 @@ static const uint NODE_LEAF_BIT = 2147483648u;
 static const uint NODE_COUNT_SHIFT = 27u;
 static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
+static const bool HAS_ANY_HIT = true;
 static const uint FLAG_ANY_HIT = 1u;
 static const float POINT_ERROR = 1.9073486e-6;
 static const float GAMMA_1_ = 5.960465e-8;
@@ -222,7 +223,6 @@ static const uint SCRATCH_SHADOW_MODE = 14u;
 static const uint SHADOW_UNOCCLUDED = 1u;
 static const uint SHADOW_ABOVE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
-static const bool HAS_ANY_HIT = true;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
 static const uint SHADOW_TRACED = 0u;
@@ -597,14 +597,14 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     return boxray;
 }
 
-float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
+float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
 {
-    float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
-    float3 a_4 = (_e8.xyz - r_1.origin);
-    float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b_6 = (_e18.xyz - r_1.origin);
-    float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_5 = (_e28.xyz - r_1.origin);
+    float4 _e9 = asfloat(triangles.Load4((slot * 3u)*16));
+    float3 a_4 = (_e9.xyz - r_1.origin);
+    float4 _e19 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
+    float3 b_6 = (_e19.xyz - r_1.origin);
+    float4 _e29 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
+    float3 c_5 = (_e29.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
@@ -616,11 +616,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)])));
+    if (occlusion) {
+        uint sign_ = (asuint(det) & 2147483648u);
+        float st = asfloat((asuint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_11 ? float3(tmax_1, 0.0, 0.0) : float3(asfloat(_e180), 0.0, 0.0));
+    }
     float rcp_ = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_11 ? float3(t_5, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    float t_5 = (scaled * rcp_);
+    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_12 ? float3(t_5, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e204), 0.0, 0.0));
 }
 
 float point_error(float3 origin_2, float3 along)
@@ -779,8 +788,8 @@ Hit finish_hit(Ray ray_3, Candidate c)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_3.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_12 = _e151;
-    return hit_12;
+    const Hit hit_13 = _e151;
+    return hit_13;
 }
 
 Fog ConstructFog(float arg0, float3 arg1) {
@@ -965,8 +974,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -976,73 +985,73 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                const float3 _e48 = hit_triangle(_e7, prim, ray_7.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < asfloat(_e51))) {
-                    float4 _e60 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e60.w);
+                const float3 _e51 = hit_triangle(_e7, prim, ray_7.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < asfloat(_e54))) {
+                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_5.object + tag) - 1u) : slot_2);
-                    Candidate c_6 = ConstructCandidate(_e48.x, owner, prim, _e48.yz, (0.0).xxx);
-                    const bool _e75 = accept(inst_5, world_ray, c_6);
-                    if (_e75) {
+                    Candidate c_6 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
+                    const bool _e78 = accept(inst_5, world_ray, c_6);
+                    if (_e78) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            const Candidate candidate_1 = _e76;
+                            Candidate _e79 = best;
+                            const Candidate candidate_1 = _e79;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e80)*32+0)), asuint(nodes.Load((base_1 + _e80)*32+12)), asfloat(nodes.Load3((base_1 + _e80)*32+16)), asuint(nodes.Load((base_1 + _e80)*32+28)));
-            float _e86 = best.t;
-            const float2 _e87 = children_entry(n_6, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < asfloat(_e91)) && (tr < asfloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e83)*32+0)), asuint(nodes.Load((base_1 + _e83)*32+12)), asfloat(nodes.Load3((base_1 + _e83)*32+16)), asuint(nodes.Load((base_1 + _e83)*32+28)));
+            float _e89 = best.t;
+            const float2 _e90 = children_entry(n_6, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e111), 73u)), 73u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 73u)), 73u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < asfloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < asfloat(_e126))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < asfloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < asfloat(_e131))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        const uint2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        const uint2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    const Candidate candidate_2 = _e140;
+    Candidate _e143 = best;
+    const Candidate candidate_2 = _e143;
     return candidate_2;
 }
 
@@ -1947,10 +1956,10 @@ float3 trace(Ray camera_ray)
             uint i_9 = stack[min(uint(min(top_1, 2u)), 2u)].next;
             stack[min(uint(min(top_1, 2u)), 2u)].next = (i_9 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
-            Hit hit_13 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
+            Hit hit_14 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
             float3 dir_8 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_9, 0u)), 0u)];
             medium_2 = parent.medium;
-            if ((dot(dir_8, hit_13.geometric_normal) < 0.0)) {
+            if ((dot(dir_8, hit_14.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
                 medium_2 = (_e289 + 1u);
             } else {
@@ -1987,7 +1996,7 @@ float3 trace(Ray camera_ray)
                     bool _e353 = found;
                     if (!(_e353)) {
                         float _e359 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-                        const float3 _e360 = spawn_origin(hit_13, _e359, dir_8);
+                        const float3 _e360 = spawn_origin(hit_14, _e359, dir_8);
                         uint _e365 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
                         const uint _e366 = medium_at(_e360, _e365);
                         medium_2 = _e366;
@@ -1995,7 +2004,7 @@ float3 trace(Ray camera_ray)
                 }
             }
             float _e371 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-            const float3 _e372 = spawn_origin(hit_13, _e371, dir_8);
+            const float3 _e372 = spawn_origin(hit_14, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
             ray_24 = ConstructRay(_e372, 0.0, dir_8, asfloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);

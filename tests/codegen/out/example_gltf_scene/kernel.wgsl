@@ -185,6 +185,7 @@ const NODE_LEAF_BIT: u32 = 2147483648u;
 const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
+const HAS_ANY_HIT: bool = true;
 const FLAG_CULL_BACK: u32 = 8u;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_ANY_HIT: u32 = 1u;
@@ -501,13 +502,13 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
-    let _e8 = triangles[(slot * 3u)];
-    let a_5 = (_e8.xyz - r_1.origin);
-    let _e18 = triangles[((slot * 3u) + 1u)];
-    let b_8 = (_e18.xyz - r_1.origin);
-    let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_9 = (_e28.xyz - r_1.origin);
+fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
+    let _e9 = triangles[(slot * 3u)];
+    let a_5 = (_e9.xyz - r_1.origin);
+    let _e19 = triangles[((slot * 3u) + 1u)];
+    let b_8 = (_e19.xyz - r_1.origin);
+    let _e29 = triangles[((slot * 3u) + 2u)];
+    let c_9 = (_e29.xyz - r_1.origin);
     let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     let bx = (b_8[min(r_1.kx, 2u)] - (r_1.shear.x * b_8[min(r_1.kz, 2u)]));
@@ -519,11 +520,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_3 < 0f)) || (w < 0f)) && (((u > 0f) || (v_3 > 0f)) || (w > 0f)));
     let det = ((u + v_3) + w);
+    let scaled = (((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_9[min(r_1.kz, 2u)])));
+    if occlusion {
+        let sign_ = (bitcast<u32>(det) & 2147483648u);
+        let st = bitcast<f32>((bitcast<u32>(scaled) ^ sign_));
+        let ad_1 = abs(det);
+        let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        let _e180 = F32_INF;
+        return select(vec3<f32>(bitcast<f32>(_e180), 0f, 0f), vec3<f32>(tmax_1, 0f, 0f), hit_13);
+    }
     let rcp = (1f / det);
-    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_9[min(r_1.kz, 2u)]))) * rcp);
-    let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
-    let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_3 * rcp), (w * rcp)), hit_13);
+    let t_6 = (scaled * rcp);
+    let hit_14 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    let _e204 = F32_INF;
+    return select(vec3<f32>(bitcast<f32>(_e204), 0f, 0f), vec3<f32>(t_6, (v_3 * rcp), (w * rcp)), hit_14);
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -919,76 +929,76 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_11: Ray,
                 let _e43 = k;
                 let prim = ((inst_6.triangle_offset + first) + _e43);
                 let _e47 = best.t;
-                let _e48 = hit_triangle(_e7, prim, ray_11.tmin, _e47);
-                let _e51 = F32_INF;
-                if (_e48.x < bitcast<f32>(_e51)) {
-                    let _e60 = triangles[((prim * 3u) + 1u)];
-                    let tag = bitcast<u32>(_e60.w);
+                let _e51 = hit_triangle(_e7, prim, ray_11.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                let _e54 = F32_INF;
+                if (_e51.x < bitcast<f32>(_e54)) {
+                    let _e63 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e63.w);
                     let owner = select(slot_2, ((inst_6.object + tag) - 1u), (tag != 0u));
-                    let c_11 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0f));
-                    let _e75 = accept(inst_6, world_ray, c_11);
-                    if _e75 {
+                    let c_11 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0f));
+                    let _e78 = accept(inst_6, world_ray, c_11);
+                    if _e78 {
                         best = c_11;
                         if shadow {
-                            let _e76 = best;
-                            return _e76;
+                            let _e79 = best;
+                            return _e79;
                         }
                     }
                 }
                 continuing {
-                    let _e77 = k;
-                    k = (_e77 + 1u);
+                    let _e80 = k;
+                    k = (_e80 + 1u);
                 }
             }
         } else {
-            let _e80 = child;
-            let n_7 = nodes[(base_2 + _e80)];
-            let _e86 = best.t;
-            let _e87 = children_entry(n_7, _e17, _e86);
-            let tl = _e87.x;
-            let tr = _e87.y;
-            let _e91 = F32_INF;
-            let _e95 = F32_INF;
-            if ((tl < bitcast<f32>(_e91)) && (tr < bitcast<f32>(_e95))) {
+            let _e83 = child;
+            let n_7 = nodes[(base_2 + _e83)];
+            let _e89 = best.t;
+            let _e90 = children_entry(n_7, _e17, _e89);
+            let tl = _e90.x;
+            let tr = _e90.y;
+            let _e94 = F32_INF;
+            let _e98 = F32_INF;
+            if ((tl < bitcast<f32>(_e94)) && (tr < bitcast<f32>(_e98))) {
                 near = n_7.a;
                 far = n_7.b;
                 if ((tr < tl) != shadow) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                let _e107 = sp_1;
-                if (_e107 < BLAS_STACK) {
-                    let _e111 = sp_1;
-                    let _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 127u)] = _e113;
-                    let _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                let _e110 = sp_1;
+                if (_e110 < BLAS_STACK) {
+                    let _e114 = sp_1;
+                    let _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 127u)] = _e116;
+                    let _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                let _e121 = near;
-                child = _e121;
+                let _e124 = near;
+                child = _e124;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (tl < bitcast<f32>(_e123)) {
+            let _e126 = F32_INF;
+            if (tl < bitcast<f32>(_e126)) {
                 child = n_7.a;
                 continue;
             }
-            let _e128 = F32_INF;
-            if (tr < bitcast<f32>(_e128)) {
+            let _e131 = F32_INF;
+            if (tr < bitcast<f32>(_e131)) {
                 child = n_7.b;
                 continue;
             }
         }
-        let _e133 = sp_1;
-        let _e134 = pop(TLAS_STACK, _e133);
-        if (_e134.x == NO_HIT) {
+        let _e136 = sp_1;
+        let _e137 = pop(TLAS_STACK, _e136);
+        if (_e137.x == NO_HIT) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    let _e140 = best;
-    return _e140;
+    let _e143 = best;
+    return _e143;
 }
 
 fn intersect_object(slot_3: u32, ray_12: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
@@ -1506,7 +1516,7 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_19: Ray, hit_6: Hit) -> vec3<f32> {
+fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f32, emissive: vec3<f32>, ray_19: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
@@ -1535,7 +1545,7 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
         let spec = (_e38 * vec3((_e41 * _e42)));
         let diffuse = (((vec3(1f) - _e38) * c_5) * vec3(((1f - metal) * INV_PI)));
         let _e56 = color;
-        color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
+        color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion_1)));
         continuing {
             let _e65 = i_5;
             i_5 = (_e65 + 1u);
@@ -1828,11 +1838,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_9 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_9 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
-            let hit_14 = stack[min(top_1, 3u)].hit;
+            let hit_15 = stack[min(top_1, 3u)].hit;
             let dir_8 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_14, _e283, dir_8);
+            let _e284 = spawn_origin(hit_15, _e283, dir_8);
             let _e287 = F32_INF;
             let _e293 = medium;
             ray_27 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);

@@ -150,6 +150,7 @@ const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
+const bool HAS_ANY_HIT = false;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 2u;
 const float POINT_ERROR = 1.9073486e-6;
@@ -450,13 +451,13 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
-    vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a_4 = (_e8.xyz - r_1.origin);
-    vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_7 = (_e18.xyz - r_1.origin);
-    vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_5 = (_e28.xyz - r_1.origin);
+vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
+    vec4 _e9 = _group_0_binding_4_cs[(slot * 3u)];
+    vec3 a_4 = (_e9.xyz - r_1.origin);
+    vec4 _e19 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
+    vec3 b_7 = (_e19.xyz - r_1.origin);
+    vec4 _e29 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
+    vec3 c_5 = (_e29.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_7[min(r_1.kx, 2u)] - (r_1.shear.x * b_7[min(r_1.kz, 2u)]));
@@ -468,11 +469,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
+    if (occlusion) {
+        uint sign_ = (floatBitsToUint(det) & 2147483648u);
+        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_7 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+    }
     float rcp = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_7 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    float t_4 = (scaled * rcp);
+    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_8 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
@@ -553,8 +563,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -564,72 +574,72 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                vec3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < uintBitsToFloat(_e51))) {
-                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e60.w);
+                vec3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < uintBitsToFloat(_e54))) {
+                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
-                    bool _e75 = accept(inst_2, world_ray, c_6);
-                    if (_e75) {
+                    Candidate c_6 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
+                    bool _e78 = accept(inst_2, world_ray, c_6);
+                    if (_e78) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e80)];
-            float _e86 = best.t;
-            vec2 _e87 = children_entry(n_6, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e83)];
+            float _e89 = best.t;
+            vec2 _e90 = children_entry(n_6, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 65u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 65u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < uintBitsToFloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < uintBitsToFloat(_e126))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < uintBitsToFloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < uintBitsToFloat(_e131))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        uvec2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        uvec2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
@@ -1357,11 +1367,11 @@ vec3 trace(Ray camera_ray) {
             uint i_6 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_6 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
-            Hit hit_8 = stack[min(top_1, 3u)].hit;
+            Hit hit_9 = stack[min(top_1, 3u)].hit;
             vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_8, _e283, dir_6);
+            vec3 _e284 = spawn_origin(hit_9, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_19 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);

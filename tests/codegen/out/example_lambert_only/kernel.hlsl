@@ -196,6 +196,7 @@ static const uint NODE_LEAF_BIT = 2147483648u;
 static const uint NODE_COUNT_SHIFT = 27u;
 static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
+static const bool HAS_ANY_HIT = false;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 2u;
 static const float POINT_ERROR = 1.9073486e-6;
@@ -582,14 +583,14 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     return boxray;
 }
 
-float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
+float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
 {
-    float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
-    float3 a_4 = (_e8.xyz - r_1.origin);
-    float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b_7 = (_e18.xyz - r_1.origin);
-    float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_5 = (_e28.xyz - r_1.origin);
+    float4 _e9 = asfloat(triangles.Load4((slot * 3u)*16));
+    float3 a_4 = (_e9.xyz - r_1.origin);
+    float4 _e19 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
+    float3 b_7 = (_e19.xyz - r_1.origin);
+    float4 _e29 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
+    float3 c_5 = (_e29.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_7[min(uint(min(r_1.kz, 2u)), 2u)]));
@@ -601,11 +602,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_7[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)])));
+    if (occlusion) {
+        uint sign_ = (asuint(det) & 2147483648u);
+        float st = asfloat((asuint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_7 ? float3(tmax_1, 0.0, 0.0) : float3(asfloat(_e180), 0.0, 0.0));
+    }
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_7[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_4, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    float t_4 = (scaled * rcp_);
+    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_8 ? float3(t_4, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
@@ -709,8 +719,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -720,73 +730,73 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                const float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < asfloat(_e51))) {
-                    float4 _e60 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e60.w);
+                const float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < asfloat(_e54))) {
+                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = ConstructCandidate(_e48.x, owner, prim, _e48.yz, (0.0).xxx);
-                    const bool _e75 = accept(inst_2, world_ray, c_6);
-                    if (_e75) {
+                    Candidate c_6 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
+                    const bool _e78 = accept(inst_2, world_ray, c_6);
+                    if (_e78) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            const Candidate candidate_1 = _e76;
+                            Candidate _e79 = best;
+                            const Candidate candidate_1 = _e79;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e80)*32+0)), asuint(nodes.Load((base_1 + _e80)*32+12)), asfloat(nodes.Load3((base_1 + _e80)*32+16)), asuint(nodes.Load((base_1 + _e80)*32+28)));
-            float _e86 = best.t;
-            const float2 _e87 = children_entry(n_6, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < asfloat(_e91)) && (tr < asfloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e83)*32+0)), asuint(nodes.Load((base_1 + _e83)*32+12)), asfloat(nodes.Load3((base_1 + _e83)*32+16)), asuint(nodes.Load((base_1 + _e83)*32+28)));
+            float _e89 = best.t;
+            const float2 _e90 = children_entry(n_6, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e111), 65u)), 65u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 65u)), 65u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < asfloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < asfloat(_e126))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < asfloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < asfloat(_e131))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        const uint2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        const uint2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    const Candidate candidate_2 = _e140;
+    Candidate _e143 = best;
+    const Candidate candidate_2 = _e143;
     return candidate_2;
 }
 
@@ -964,8 +974,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_8 = _e151;
-    return hit_8;
+    const Hit hit_9 = _e151;
+    return hit_9;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1698,11 +1708,11 @@ float3 trace(Ray camera_ray)
             uint i_6 = stack[min(uint(min(top_1, 3u)), 3u)].next;
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_6 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_9 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_10 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_6 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_6, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_9, _e283, dir_6);
+            const float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_19 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);

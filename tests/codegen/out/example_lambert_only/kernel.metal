@@ -190,6 +190,7 @@ constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
+constant bool HAS_ANY_HIT = false;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 2u;
 constant float POINT_ERROR = 0.0000019073486;
@@ -564,16 +565,17 @@ metal::float3 hit_triangle(
     uint slot,
     float tmin,
     float tmax_1,
+    bool occlusion,
     thread uint& F32_INF,
     device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a_4 = _e8.xyz - r_1.origin;
-    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_7 = _e18.xyz - r_1.origin;
-    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    metal::float4 _e9 = triangles[slot * 3u];
+    metal::float3 a_4 = _e9.xyz - r_1.origin;
+    metal::float4 _e19 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_7 = _e19.xyz - r_1.origin;
+    metal::float4 _e29 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_5 = _e29.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_7[metal::min(r_1.kz, 2u)]);
@@ -585,11 +587,20 @@ metal::float3 hit_triangle(
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
+    float scaled = ((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_7[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]));
+    if (occlusion) {
+        uint sign = as_type<uint>(det) & 2147483648u;
+        float st = as_type<float>(as_type<uint>(scaled) ^ sign);
+        float ad_1 = metal::abs(det);
+        bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1));
+        uint _e180 = F32_INF;
+        return hit_7 ? metal::float3(tmax_1, 0.0, 0.0) : metal::float3(as_type<float>(_e180), 0.0, 0.0);
+    }
     float rcp = 1.0 / det;
-    float t_4 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_7[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
-    uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_4, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    float t_4 = scaled * rcp;
+    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
+    uint _e204 = F32_INF;
+    return hit_8 ? metal::float3(t_4, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e204), 0.0, 0.0);
 }
 
 bool accept(
@@ -711,8 +722,8 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = _e77 + 1u;
+                    uint _e80 = k;
+                    k = _e80 + 1u;
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -722,72 +733,72 @@ Candidate intersect_mesh(
                 uint _e43 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e43;
                 float _e47 = best.t;
-                metal::float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47, F32_INF, triangles, _buffer_sizes);
-                uint _e51 = F32_INF;
-                if (_e48.x < as_type<float>(_e51)) {
-                    metal::float4 _e60 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e60.w);
+                metal::float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e54 = F32_INF;
+                if (_e51.x < as_type<float>(_e54)) {
+                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e63.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_6 = Candidate {_e48.x, owner, prim, {}, _e48.yz, {}, metal::float3(0.0)};
-                    bool _e75 = accept(inst_2, world_ray, c_6);
-                    if (_e75) {
+                    Candidate c_6 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
+                    bool _e78 = accept(inst_2, world_ray, c_6);
+                    if (_e78) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_6 = nodes[base_1 + _e80];
-            float _e86 = best.t;
-            metal::float2 _e87 = children_entry(n_6, _e17, _e86, F32_INF);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if ((tl < as_type<float>(_e91)) && (tr < as_type<float>(_e95))) {
+            uint _e83 = child;
+            GpuNode n_6 = nodes[base_1 + _e83];
+            float _e89 = best.t;
+            metal::float2 _e90 = children_entry(n_6, _e17, _e89, F32_INF);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e107 = sp_1;
-                if (_e107 < BLAS_STACK) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e111, 65u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = _e118 + 1u;
+                uint _e110 = sp_1;
+                if (_e110 < BLAS_STACK) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 65u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = _e121 + 1u;
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if (tl < as_type<float>(_e123)) {
+            uint _e126 = F32_INF;
+            if (tl < as_type<float>(_e126)) {
                 child = n_6.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if (tr < as_type<float>(_e128)) {
+            uint _e131 = F32_INF;
+            if (tr < as_type<float>(_e131)) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        metal::uint2 _e134 = pop(TLAS_STACK, _e133, traversal_stack);
-        if (_e134.x == NO_HIT) {
+        uint _e136 = sp_1;
+        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
+        if (_e137.x == NO_HIT) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 Candidate intersect_object(
@@ -1819,11 +1830,11 @@ metal::float3 trace(
             uint i_6 = stack.inner[metal::min(top_1, 3u)].next;
             stack.inner[metal::min(top_1, 3u)].next = i_6 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_8 = stack.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_9 = stack.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_6, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_6);
+            metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_19 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};

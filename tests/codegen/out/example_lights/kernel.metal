@@ -228,6 +228,7 @@ constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
+constant bool HAS_ANY_HIT = false;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 6u;
 constant float TAU = 6.2831855;
@@ -610,16 +611,17 @@ metal::float3 hit_triangle(
     uint slot,
     float tmin,
     float tmax_1,
+    bool occlusion,
     thread uint& F32_INF,
     device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a_4 = _e8.xyz - r_1.origin;
-    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_8 = _e18.xyz - r_1.origin;
-    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    metal::float4 _e9 = triangles[slot * 3u];
+    metal::float3 a_4 = _e9.xyz - r_1.origin;
+    metal::float4 _e19 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_8 = _e19.xyz - r_1.origin;
+    metal::float4 _e29 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_5 = _e29.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_8[metal::min(r_1.kz, 2u)]);
@@ -631,11 +633,20 @@ metal::float3 hit_triangle(
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0));
     float det = (u + v_3) + w;
+    float scaled = ((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_8[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]));
+    if (occlusion) {
+        uint sign_1 = as_type<uint>(det) & 2147483648u;
+        float st = as_type<float>(as_type<uint>(scaled) ^ sign_1);
+        float ad_1 = metal::abs(det);
+        bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1));
+        uint _e180 = F32_INF;
+        return hit_7 ? metal::float3(tmax_1, 0.0, 0.0) : metal::float3(as_type<float>(_e180), 0.0, 0.0);
+    }
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_8[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
-    uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    float t_6 = scaled * rcp;
+    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
+    uint _e204 = F32_INF;
+    return hit_8 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e204), 0.0, 0.0);
 }
 
 bool accept(
@@ -757,8 +768,8 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = _e77 + 1u;
+                    uint _e80 = k;
+                    k = _e80 + 1u;
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -768,72 +779,72 @@ Candidate intersect_mesh(
                 uint _e43 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e43;
                 float _e47 = best.t;
-                metal::float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47, F32_INF, triangles, _buffer_sizes);
-                uint _e51 = F32_INF;
-                if (_e48.x < as_type<float>(_e51)) {
-                    metal::float4 _e60 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e60.w);
+                metal::float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e54 = F32_INF;
+                if (_e51.x < as_type<float>(_e54)) {
+                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e63.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_6 = Candidate {_e48.x, owner, prim, {}, _e48.yz, {}, metal::float3(0.0)};
-                    bool _e75 = accept(inst_2, world_ray, c_6);
-                    if (_e75) {
+                    Candidate c_6 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
+                    bool _e78 = accept(inst_2, world_ray, c_6);
+                    if (_e78) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_8 = nodes[base_1 + _e80];
-            float _e86 = best.t;
-            metal::float2 _e87 = children_entry(n_8, _e17, _e86, F32_INF);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if ((tl < as_type<float>(_e91)) && (tr < as_type<float>(_e95))) {
+            uint _e83 = child;
+            GpuNode n_8 = nodes[base_1 + _e83];
+            float _e89 = best.t;
+            metal::float2 _e90 = children_entry(n_8, _e17, _e89, F32_INF);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
                 near = n_8.a;
                 far = n_8.b;
                 if ((tr < tl) != shadow) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e107 = sp_1;
-                if (_e107 < BLAS_STACK) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e111, 69u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = _e118 + 1u;
+                uint _e110 = sp_1;
+                if (_e110 < BLAS_STACK) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 69u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = _e121 + 1u;
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if (tl < as_type<float>(_e123)) {
+            uint _e126 = F32_INF;
+            if (tl < as_type<float>(_e126)) {
                 child = n_8.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if (tr < as_type<float>(_e128)) {
+            uint _e131 = F32_INF;
+            if (tr < as_type<float>(_e131)) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        metal::uint2 _e134 = pop(TLAS_STACK, _e133, traversal_stack);
-        if (_e134.x == NO_HIT) {
+        uint _e136 = sp_1;
+        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
+        if (_e137.x == NO_HIT) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 Box load_Box(
@@ -1615,11 +1626,11 @@ SphereLight load_SphereLight(
 metal::float3x3 orthonormal_basis(
     metal::float3 n_4
 ) {
-    float sign_1 = ((as_type<uint>(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
-    float a_7 = -1.0 / (sign_1 + n_4.z);
+    float sign_2 = ((as_type<uint>(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_7 = -1.0 / (sign_2 + n_4.z);
     float b_12 = (n_4.x * n_4.y) * a_7;
-    float _e16 = sign_1 * n_4.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_4.x) * a_7), sign_1 * b_12, -(_e16)), metal::float3(b_12, sign_1 + ((n_4.y * n_4.y) * a_7), -(n_4.y)), n_4);
+    float _e16 = sign_2 * n_4.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_4.x) * a_7), sign_2 * b_12, -(_e16)), metal::float3(b_12, sign_2 + ((n_4.y * n_4.y) * a_7), -(n_4.y)), n_4);
 }
 
 LightSample sphere_light(
@@ -2306,11 +2317,11 @@ metal::float3 trace(
             uint i_9 = stack.inner[metal::min(top_1, 3u)].next;
             stack.inner[metal::min(top_1, 3u)].next = i_9 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_8 = stack.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_9 = stack.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_9 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_9);
+            metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_22 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};

@@ -185,6 +185,7 @@ const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
+const bool HAS_ANY_HIT = false;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 8u;
 const float TAU = 6.2831855;
@@ -496,13 +497,13 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
-    vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a_4 = (_e8.xyz - r_1.origin);
-    vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_7 = (_e18.xyz - r_1.origin);
-    vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_8 = (_e28.xyz - r_1.origin);
+vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
+    vec4 _e9 = _group_0_binding_4_cs[(slot * 3u)];
+    vec3 a_4 = (_e9.xyz - r_1.origin);
+    vec4 _e19 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
+    vec3 b_7 = (_e19.xyz - r_1.origin);
+    vec4 _e29 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
+    vec3 c_8 = (_e29.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_7[min(r_1.kx, 2u)] - (r_1.shear.x * b_7[min(r_1.kz, 2u)]));
@@ -514,11 +515,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float w_1 = ((bx * ay) - (by * ax));
     bool outside = ((((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0)));
     float det = ((u_3 + v_6) + w_1);
+    float scaled = (((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_6 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(r_1.kz, 2u)])));
+    if (occlusion) {
+        uint sign_ = (floatBitsToUint(det) & 2147483648u);
+        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_12 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+    }
     float rcp = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_6 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_12 ? vec3(t_4, (v_6 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    float t_4 = (scaled * rcp);
+    bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_13 ? vec3(t_4, (v_6 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
@@ -599,8 +609,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -610,72 +620,72 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                vec3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < uintBitsToFloat(_e51))) {
-                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e60.w);
+                vec3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < uintBitsToFloat(_e54))) {
+                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_9 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
-                    bool _e75 = accept(inst_2, world_ray, c_9);
-                    if (_e75) {
+                    Candidate c_9 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
+                    bool _e78 = accept(inst_2, world_ray, c_9);
+                    if (_e78) {
                         best = c_9;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_11 = _group_0_binding_2_cs[(base_5 + _e80)];
-            float _e86 = best.t;
-            vec2 _e87 = children_entry(n_11, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_11 = _group_0_binding_2_cs[(base_5 + _e83)];
+            float _e89 = best.t;
+            vec2 _e90 = children_entry(n_11, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
                 near = n_11.a;
                 far = n_11.b;
                 if (((tr < tl) != shadow)) {
                     near = n_11.b;
                     far = n_11.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 71u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 71u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < uintBitsToFloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < uintBitsToFloat(_e126))) {
                 child = n_11.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < uintBitsToFloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < uintBitsToFloat(_e131))) {
                 child = n_11.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        uvec2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        uvec2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 Sphere load_Sphere(uint offset_2) {
@@ -1175,11 +1185,11 @@ SphereLight load_SphereLight(uint offset_8) {
 }
 
 mat3x3 orthonormal_basis(vec3 n_3) {
-    float sign_ = (((floatBitsToUint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_7 = (-1.0 / (sign_ + n_3.z));
+    float sign_1 = (((floatBitsToUint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_1 + n_3.z));
     float b_11 = ((n_3.x * n_3.y) * a_7);
-    float _e16 = (sign_ * n_3.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_11), -(_e16)), vec3(b_11, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
+    float _e16 = (sign_1 * n_3.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_1 * b_11), -(_e16)), vec3(b_11, (sign_1 + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
 LightSample sphere_light(SphereLight l_1, vec3 position_2, vec3 normal_3) {

@@ -253,6 +253,7 @@ static const uint NODE_LEAF_BIT = 2147483648u;
 static const uint NODE_COUNT_SHIFT = 27u;
 static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
+static const bool HAS_ANY_HIT = false;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 8u;
 static const float TAU = 6.2831855;
@@ -650,14 +651,14 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     return boxray;
 }
 
-float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
+float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
 {
-    float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
-    float3 a_4 = (_e8.xyz - r_1.origin);
-    float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b_7 = (_e18.xyz - r_1.origin);
-    float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_8 = (_e28.xyz - r_1.origin);
+    float4 _e9 = asfloat(triangles.Load4((slot * 3u)*16));
+    float3 a_4 = (_e9.xyz - r_1.origin);
+    float4 _e19 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
+    float3 b_7 = (_e19.xyz - r_1.origin);
+    float4 _e29 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
+    float3 c_8 = (_e29.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_7[min(uint(min(r_1.kz, 2u)), 2u)]));
@@ -669,11 +670,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float w_1 = ((bx * ay) - (by * ax));
     bool outside = ((((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0)));
     float det = ((u_3 + v_6) + w_1);
+    float scaled = (((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_6 * (r_1.shear.z * b_7[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(uint(min(r_1.kz, 2u)), 2u)])));
+    if (occlusion) {
+        uint sign_ = (asuint(det) & 2147483648u);
+        float st = asfloat((asuint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_12 ? float3(tmax_1, 0.0, 0.0) : float3(asfloat(_e180), 0.0, 0.0));
+    }
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_6 * (r_1.shear.z * b_7[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_12 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    float t_4 = (scaled * rcp_);
+    bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_13 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
@@ -777,8 +787,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -788,73 +798,73 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                const float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < asfloat(_e51))) {
-                    float4 _e60 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e60.w);
+                const float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < asfloat(_e54))) {
+                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_9 = ConstructCandidate(_e48.x, owner, prim, _e48.yz, (0.0).xxx);
-                    const bool _e75 = accept(inst_2, world_ray, c_9);
-                    if (_e75) {
+                    Candidate c_9 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
+                    const bool _e78 = accept(inst_2, world_ray, c_9);
+                    if (_e78) {
                         best = c_9;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            const Candidate candidate_1 = _e76;
+                            Candidate _e79 = best;
+                            const Candidate candidate_1 = _e79;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_11 = ConstructGpuNode(asfloat(nodes.Load3((base_5 + _e80)*32+0)), asuint(nodes.Load((base_5 + _e80)*32+12)), asfloat(nodes.Load3((base_5 + _e80)*32+16)), asuint(nodes.Load((base_5 + _e80)*32+28)));
-            float _e86 = best.t;
-            const float2 _e87 = children_entry(n_11, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < asfloat(_e91)) && (tr < asfloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_11 = ConstructGpuNode(asfloat(nodes.Load3((base_5 + _e83)*32+0)), asuint(nodes.Load((base_5 + _e83)*32+12)), asfloat(nodes.Load3((base_5 + _e83)*32+16)), asuint(nodes.Load((base_5 + _e83)*32+28)));
+            float _e89 = best.t;
+            const float2 _e90 = children_entry(n_11, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
                 near = n_11.a;
                 far = n_11.b;
                 if (((tr < tl) != shadow)) {
                     near = n_11.b;
                     far = n_11.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e111), 71u)), 71u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 71u)), 71u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < asfloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < asfloat(_e126))) {
                 child = n_11.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < asfloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < asfloat(_e131))) {
                 child = n_11.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        const uint2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        const uint2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    const Candidate candidate_2 = _e140;
+    Candidate _e143 = best;
+    const Candidate candidate_2 = _e143;
     return candidate_2;
 }
 
@@ -1121,8 +1131,8 @@ Hit finish_hit(Ray ray_8, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_8.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_13 = _e151;
-    return hit_13;
+    const Hit hit_14 = _e151;
+    return hit_14;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1523,11 +1533,11 @@ SphereLight load_SphereLight(uint offset_8)
 
 float3x3 orthonormal_basis(float3 n_3)
 {
-    float sign_ = (((asuint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_7 = (-1.0 / (sign_ + n_3.z));
+    float sign_1 = (((asuint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_1 + n_3.z));
     float b_11 = ((n_3.x * n_3.y) * a_7);
-    float _e16 = (sign_ * n_3.x);
-    return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_11), -(_e16)), float3(b_11, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
+    float _e16 = (sign_1 * n_3.x);
+    return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_1 * b_11), -(_e16)), float3(b_11, (sign_1 + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
 LightSample sphere_light(SphereLight l_1, float3 position_2, float3 normal_3)

@@ -164,6 +164,7 @@ const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
+const bool HAS_ANY_HIT = false;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 3u;
 const float POINT_ERROR = 1.9073486e-6;
@@ -472,13 +473,13 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
-    vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a_5 = (_e8.xyz - r_1.origin);
-    vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_8 = (_e18.xyz - r_1.origin);
-    vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_6 = (_e28.xyz - r_1.origin);
+vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
+    vec4 _e9 = _group_0_binding_4_cs[(slot * 3u)];
+    vec3 a_5 = (_e9.xyz - r_1.origin);
+    vec4 _e19 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
+    vec3 b_8 = (_e19.xyz - r_1.origin);
+    vec4 _e29 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
+    vec3 c_6 = (_e29.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     float bx = (b_8[min(r_1.kx, 2u)] - (r_1.shear.x * b_8[min(r_1.kz, 2u)]));
@@ -490,11 +491,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)])));
+    if (occlusion) {
+        uint sign_ = (floatBitsToUint(det) & 2147483648u);
+        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_10 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+    }
     float rcp = (1.0 / det);
-    float t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_10 ? vec3(t_2, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    float t_2 = (scaled * rcp);
+    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_11 ? vec3(t_2, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
@@ -575,8 +585,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -586,72 +596,72 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                vec3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < uintBitsToFloat(_e51))) {
-                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e60.w);
+                vec3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < uintBitsToFloat(_e54))) {
+                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_7 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
-                    bool _e75 = accept(inst_2, world_ray, c_7);
-                    if (_e75) {
+                    Candidate c_7 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
+                    bool _e78 = accept(inst_2, world_ray, c_7);
+                    if (_e78) {
                         best = c_7;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_1 + _e80)];
-            float _e86 = best.t;
-            vec2 _e87 = children_entry(n_7, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_7 = _group_0_binding_2_cs[(base_1 + _e83)];
+            float _e89 = best.t;
+            vec2 _e90 = children_entry(n_7, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
                 near = n_7.a;
                 far = n_7.b;
                 if (((tr < tl) != shadow)) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 66u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 66u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < uintBitsToFloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < uintBitsToFloat(_e126))) {
                 child = n_7.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < uintBitsToFloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < uintBitsToFloat(_e131))) {
                 child = n_7.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        uvec2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        uvec2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {

@@ -171,6 +171,7 @@ const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
+const bool HAS_ANY_HIT = false;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 3u;
 const uint BVH_MESH_STACK = 64u;
@@ -478,13 +479,13 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
-vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
-    vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a_5 = (_e8.xyz - r_1.origin);
-    vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_8 = (_e18.xyz - r_1.origin);
-    vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_6 = (_e28.xyz - r_1.origin);
+vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
+    vec4 _e9 = _group_0_binding_4_cs[(slot * 3u)];
+    vec3 a_5 = (_e9.xyz - r_1.origin);
+    vec4 _e19 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
+    vec3 b_8 = (_e19.xyz - r_1.origin);
+    vec4 _e29 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
+    vec3 c_6 = (_e29.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     float bx = (b_8[min(r_1.kx, 2u)] - (r_1.shear.x * b_8[min(r_1.kz, 2u)]));
@@ -496,11 +497,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)])));
+    if (occlusion) {
+        uint sign_ = (floatBitsToUint(det) & 2147483648u);
+        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_7 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+    }
     float rcp = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_7 ? vec3(t_7, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    float t_7 = (scaled * rcp);
+    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_8 ? vec3(t_7, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
@@ -581,8 +591,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -592,72 +602,72 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                vec3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < uintBitsToFloat(_e51))) {
-                    vec4 _e60 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e60.w);
+                vec3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < uintBitsToFloat(_e54))) {
+                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_7 = Candidate(_e48.x, owner, prim, _e48.yz, vec3(0.0));
-                    bool _e75 = accept(inst_2, world_ray, c_7);
-                    if (_e75) {
+                    Candidate c_7 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
+                    bool _e78 = accept(inst_2, world_ray, c_7);
+                    if (_e78) {
                         best = c_7;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_8 = _group_0_binding_2_cs[(base_1 + _e80)];
-            float _e86 = best.t;
-            vec2 _e87 = children_entry(n_8, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < uintBitsToFloat(_e91)) && (tr < uintBitsToFloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_8 = _group_0_binding_2_cs[(base_1 + _e83)];
+            float _e89 = best.t;
+            vec2 _e90 = children_entry(n_8, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
                 near = n_8.a;
                 far = n_8.b;
                 if (((tr < tl) != shadow)) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min((TLAS_STACK + _e111), 66u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min((TLAS_STACK + _e114), 66u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < uintBitsToFloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < uintBitsToFloat(_e126))) {
                 child = n_8.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < uintBitsToFloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < uintBitsToFloat(_e131))) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        uvec2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        uvec2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 BvhMesh load_BvhMesh(uint offset_2) {
@@ -772,10 +782,10 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     float det_1 = ((u_1 + v_3) + w_1);
     float _e112 = (1.0 / det_1);
     float t_9 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_8 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
+    bool hit_9 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    return Intersection((hit_8 ? t_9 : uintBitsToFloat(_e137)), (hit_8 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_8 ? vec2((v_3 * _e112), (w_1 * _e112)) : vec2(0.0)));
+    return Intersection((hit_9 ? t_9 : uintBitsToFloat(_e137)), (hit_9 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_9 ? vec2((v_3 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
 Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8) {
@@ -1789,11 +1799,11 @@ vec3 trace(Ray camera_ray) {
             uint i_8 = stack_1[min(top_1, 3u)].next;
             stack_1[min(top_1, 3u)].next = (i_8 + 1u);
             Ray parent = stack_1[min(top_1, 3u)].ray;
-            Hit hit_9 = stack_1[min(top_1, 3u)].hit;
+            Hit hit_10 = stack_1[min(top_1, 3u)].hit;
             vec3 dir_7 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_9, _e283, dir_7);
+            vec3 _e284 = spawn_origin(hit_10, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_25 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);

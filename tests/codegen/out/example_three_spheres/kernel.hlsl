@@ -230,6 +230,7 @@ static const uint NODE_LEAF_BIT = 2147483648u;
 static const uint NODE_COUNT_SHIFT = 27u;
 static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
+static const bool HAS_ANY_HIT = false;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 3u;
 static const uint BVH_MESH_STACK = 64u;
@@ -619,14 +620,14 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     return boxray;
 }
 
-float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
+float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
 {
-    float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
-    float3 a_5 = (_e8.xyz - r_1.origin);
-    float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b_8 = (_e18.xyz - r_1.origin);
-    float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_6 = (_e28.xyz - r_1.origin);
+    float4 _e9 = asfloat(triangles.Load4((slot * 3u)*16));
+    float3 a_5 = (_e9.xyz - r_1.origin);
+    float4 _e19 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
+    float3 b_8 = (_e19.xyz - r_1.origin);
+    float4 _e29 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
+    float3 c_6 = (_e29.xyz - r_1.origin);
     float ax = (a_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_8[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_8[min(uint(min(r_1.kz, 2u)), 2u)]));
@@ -638,11 +639,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
+    float scaled = (((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_8[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)])));
+    if (occlusion) {
+        uint sign_ = (asuint(det) & 2147483648u);
+        float st = asfloat((asuint(scaled) ^ sign_));
+        float ad_1 = abs(det);
+        bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
+        uint _e180 = F32_INF;
+        return (hit_7 ? float3(tmax_1, 0.0, 0.0) : float3(asfloat(_e180), 0.0, 0.0));
+    }
     float rcp_ = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_8[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
-    uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_7, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    float t_7 = (scaled * rcp_);
+    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
+    uint _e204 = F32_INF;
+    return (hit_8 ? float3(t_7, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e204), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
@@ -746,8 +756,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = (_e77 + 1u);
+                    uint _e80 = k;
+                    k = (_e80 + 1u);
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -757,73 +767,73 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e43 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e43);
                 float _e47 = best.t;
-                const float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47);
-                uint _e51 = F32_INF;
-                if ((_e48.x < asfloat(_e51))) {
-                    float4 _e60 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e60.w);
+                const float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
+                uint _e54 = F32_INF;
+                if ((_e51.x < asfloat(_e54))) {
+                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e63.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_7 = ConstructCandidate(_e48.x, owner, prim, _e48.yz, (0.0).xxx);
-                    const bool _e75 = accept(inst_2, world_ray, c_7);
-                    if (_e75) {
+                    Candidate c_7 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
+                    const bool _e78 = accept(inst_2, world_ray, c_7);
+                    if (_e78) {
                         best = c_7;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            const Candidate candidate_1 = _e76;
+                            Candidate _e79 = best;
+                            const Candidate candidate_1 = _e79;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e80)*32+0)), asuint(nodes.Load((base_1 + _e80)*32+12)), asfloat(nodes.Load3((base_1 + _e80)*32+16)), asuint(nodes.Load((base_1 + _e80)*32+28)));
-            float _e86 = best.t;
-            const float2 _e87 = children_entry(n_8, _e17, _e86);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if (((tl < asfloat(_e91)) && (tr < asfloat(_e95)))) {
+            uint _e83 = child;
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e83)*32+0)), asuint(nodes.Load((base_1 + _e83)*32+12)), asfloat(nodes.Load3((base_1 + _e83)*32+16)), asuint(nodes.Load((base_1 + _e83)*32+28)));
+            float _e89 = best.t;
+            const float2 _e90 = children_entry(n_8, _e17, _e89);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
                 near = n_8.a;
                 far = n_8.b;
                 if (((tr < tl) != shadow)) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e107 = sp_1;
-                if ((_e107 < BLAS_STACK)) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e111), 66u)), 66u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = (_e118 + 1u);
+                uint _e110 = sp_1;
+                if ((_e110 < BLAS_STACK)) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 66u)), 66u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = (_e121 + 1u);
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((tl < asfloat(_e123))) {
+            uint _e126 = F32_INF;
+            if ((tl < asfloat(_e126))) {
                 child = n_8.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if ((tr < asfloat(_e128))) {
+            uint _e131 = F32_INF;
+            if ((tr < asfloat(_e131))) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        const uint2 _e134 = pop(TLAS_STACK, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e136 = sp_1;
+        const uint2 _e137 = pop(TLAS_STACK, _e136);
+        if ((_e137.x == NO_HIT)) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    const Candidate candidate_2 = _e140;
+    Candidate _e143 = best;
+    const Candidate candidate_2 = _e143;
     return candidate_2;
 }
 
@@ -982,10 +992,10 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri)
     float det_1 = ((u_1 + v_3) + w_1);
     float _e112 = (1.0 / det_1);
     float t_9 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_3 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_8 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
+    bool hit_9 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    const Intersection intersection = ConstructIntersection((hit_8 ? t_9 : asfloat(_e137)), (hit_8 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_8 ? float2((v_3 * _e112), (w_1 * _e112)) : (0.0).xx));
+    const Intersection intersection = ConstructIntersection((hit_9 ? t_9 : asfloat(_e137)), (hit_9 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_9 ? float2((v_3 * _e112), (w_1 * _e112)) : (0.0).xx));
     return intersection;
 }
 
@@ -1388,8 +1398,8 @@ Hit finish_hit(Ray ray_12, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_12.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_9 = _e151;
-    return hit_9;
+    const Hit hit_10 = _e151;
+    return hit_10;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -2242,11 +2252,11 @@ float3 trace(Ray camera_ray)
             uint i_8 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
             stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_8 + 1u);
             Ray parent = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_10 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_11 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_7 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_8, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
+            const float3 _e284 = spawn_origin(hit_11, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_25 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);

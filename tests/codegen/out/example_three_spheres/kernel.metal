@@ -221,6 +221,7 @@ constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
+constant bool HAS_ANY_HIT = false;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 3u;
 constant uint BVH_MESH_STACK = 64u;
@@ -594,16 +595,17 @@ metal::float3 hit_triangle(
     uint slot,
     float tmin,
     float tmax_1,
+    bool occlusion,
     thread uint& F32_INF,
     device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a_5 = _e8.xyz - r_1.origin;
-    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_8 = _e18.xyz - r_1.origin;
-    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_6 = _e28.xyz - r_1.origin;
+    metal::float4 _e9 = triangles[slot * 3u];
+    metal::float3 a_5 = _e9.xyz - r_1.origin;
+    metal::float4 _e19 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_8 = _e19.xyz - r_1.origin;
+    metal::float4 _e29 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_6 = _e29.xyz - r_1.origin;
     float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
     float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
     float bx = b_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_8[metal::min(r_1.kz, 2u)]);
@@ -615,11 +617,20 @@ metal::float3 hit_triangle(
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
+    float scaled = ((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_8[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]));
+    if (occlusion) {
+        uint sign = as_type<uint>(det) & 2147483648u;
+        float st = as_type<float>(as_type<uint>(scaled) ^ sign);
+        float ad_1 = metal::abs(det);
+        bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1));
+        uint _e180 = F32_INF;
+        return hit_7 ? metal::float3(tmax_1, 0.0, 0.0) : metal::float3(as_type<float>(_e180), 0.0, 0.0);
+    }
     float rcp = 1.0 / det;
-    float t_7 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_8[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1);
-    uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_7, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    float t_7 = scaled * rcp;
+    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1);
+    uint _e204 = F32_INF;
+    return hit_8 ? metal::float3(t_7, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e204), 0.0, 0.0);
 }
 
 bool accept(
@@ -741,8 +752,8 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e77 = k;
-                    k = _e77 + 1u;
+                    uint _e80 = k;
+                    k = _e80 + 1u;
                 }
                 loop_init = false;
                 uint _e39 = k;
@@ -752,72 +763,72 @@ Candidate intersect_mesh(
                 uint _e43 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e43;
                 float _e47 = best.t;
-                metal::float3 _e48 = hit_triangle(_e7, prim, ray_4.tmin, _e47, F32_INF, triangles, _buffer_sizes);
-                uint _e51 = F32_INF;
-                if (_e48.x < as_type<float>(_e51)) {
-                    metal::float4 _e60 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e60.w);
+                metal::float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e54 = F32_INF;
+                if (_e51.x < as_type<float>(_e54)) {
+                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e63.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_7 = Candidate {_e48.x, owner, prim, {}, _e48.yz, {}, metal::float3(0.0)};
-                    bool _e75 = accept(inst_2, world_ray, c_7);
-                    if (_e75) {
+                    Candidate c_7 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
+                    bool _e78 = accept(inst_2, world_ray, c_7);
+                    if (_e78) {
                         best = c_7;
                         if (shadow) {
-                            Candidate _e76 = best;
-                            return _e76;
+                            Candidate _e79 = best;
+                            return _e79;
                         }
                     }
                 }
             }
         } else {
-            uint _e80 = child;
-            GpuNode n_8 = nodes[base_1 + _e80];
-            float _e86 = best.t;
-            metal::float2 _e87 = children_entry(n_8, _e17, _e86, F32_INF);
-            float tl = _e87.x;
-            float tr = _e87.y;
-            uint _e91 = F32_INF;
-            uint _e95 = F32_INF;
-            if ((tl < as_type<float>(_e91)) && (tr < as_type<float>(_e95))) {
+            uint _e83 = child;
+            GpuNode n_8 = nodes[base_1 + _e83];
+            float _e89 = best.t;
+            metal::float2 _e90 = children_entry(n_8, _e17, _e89, F32_INF);
+            float tl = _e90.x;
+            float tr = _e90.y;
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
                 near = n_8.a;
                 far = n_8.b;
                 if ((tr < tl) != shadow) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e107 = sp_1;
-                if (_e107 < BLAS_STACK) {
-                    uint _e111 = sp_1;
-                    uint _e113 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e111, 66u)] = _e113;
-                    uint _e118 = sp_1;
-                    sp_1 = _e118 + 1u;
+                uint _e110 = sp_1;
+                if (_e110 < BLAS_STACK) {
+                    uint _e114 = sp_1;
+                    uint _e116 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 66u)] = _e116;
+                    uint _e121 = sp_1;
+                    sp_1 = _e121 + 1u;
                 }
-                uint _e121 = near;
-                child = _e121;
+                uint _e124 = near;
+                child = _e124;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if (tl < as_type<float>(_e123)) {
+            uint _e126 = F32_INF;
+            if (tl < as_type<float>(_e126)) {
                 child = n_8.a;
                 continue;
             }
-            uint _e128 = F32_INF;
-            if (tr < as_type<float>(_e128)) {
+            uint _e131 = F32_INF;
+            if (tr < as_type<float>(_e131)) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e133 = sp_1;
-        metal::uint2 _e134 = pop(TLAS_STACK, _e133, traversal_stack);
-        if (_e134.x == NO_HIT) {
+        uint _e136 = sp_1;
+        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
+        if (_e137.x == NO_HIT) {
             break;
         }
-        child = _e134.x;
-        sp_1 = _e134.y;
+        child = _e137.x;
+        sp_1 = _e137.y;
     }
-    Candidate _e140 = best;
-    return _e140;
+    Candidate _e143 = best;
+    return _e143;
 }
 
 BvhMesh load_BvhMesh(
@@ -964,10 +975,10 @@ Intersection intersect_triangle(
     float det_1 = (u_1 + v_3) + w_1;
     float _e112 = 1.0 / det_1;
     float t_9 = (((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
-    bool hit_8 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax));
+    bool hit_9 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax));
     metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
     uint _e137 = F32_INF;
-    return Intersection {hit_8 ? t_9 : as_type<float>(_e137), {}, hit_8 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_8 ? metal::float2(v_3 * _e112, w_1 * _e112) : metal::float2(0.0)};
+    return Intersection {hit_9 ? t_9 : as_type<float>(_e137), {}, hit_9 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_9 ? metal::float2(v_3 * _e112, w_1 * _e112) : metal::float2(0.0)};
 }
 
 Intersection bvh_mesh_intersect(
@@ -2375,11 +2386,11 @@ metal::float3 trace(
             uint i_8 = stack_1.inner[metal::min(top_1, 3u)].next;
             stack_1.inner[metal::min(top_1, 3u)].next = i_8 + 1u;
             Ray parent = stack_1.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_9 = stack_1.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_10 = stack_1.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_7 = stack_1.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_8, 0u)];
             medium = parent.medium;
             float _e283 = stack_1.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_7);
+            metal::float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
             ray_25 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
