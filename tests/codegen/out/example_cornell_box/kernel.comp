@@ -468,18 +468,17 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     float det = ((u + v_2) + w);
     float scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
     if (occlusion) {
-        uint sign_ = (floatBitsToUint(det) & 2147483648u);
-        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float st = ((det < 0.0) ? -(scaled) : scaled);
         float ad_1 = abs(det);
         bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        uint _e180 = F32_INF;
-        return (hit_7 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+        uint _e178 = F32_INF;
+        return (hit_7 ? vec3(tmin, 0.0, 0.0) : vec3(uintBitsToFloat(_e178), 0.0, 0.0));
     }
     float rcp = (1.0 / det);
     float t_4 = (scaled * rcp);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    uint _e204 = F32_INF;
-    return (hit_8 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
+    uint _e202 = F32_INF;
+    return (hit_8 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {

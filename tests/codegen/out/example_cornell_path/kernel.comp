@@ -470,18 +470,17 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     float det = ((u_1 + v_2) + w);
     float scaled = (((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
     if (occlusion) {
-        uint sign_ = (floatBitsToUint(det) & 2147483648u);
-        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_));
+        float st = ((det < 0.0) ? -(scaled) : scaled);
         float ad_1 = abs(det);
         bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        uint _e180 = F32_INF;
-        return (hit_7 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+        uint _e178 = F32_INF;
+        return (hit_7 ? vec3(tmin, 0.0, 0.0) : vec3(uintBitsToFloat(_e178), 0.0, 0.0));
     }
     float rcp = (1.0 / det);
     float t = (scaled * rcp);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1));
-    uint _e204 = F32_INF;
-    return (hit_8 ? vec3(t, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
+    uint _e202 = F32_INF;
+    return (hit_8 ? vec3(t, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
@@ -968,11 +967,11 @@ PathDiffuse load_PathDiffuse(uint offset_3) {
 }
 
 mat3x3 orthonormal_basis(vec3 n_3) {
-    float sign_1 = (((floatBitsToUint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_6 = (-1.0 / (sign_1 + n_3.z));
+    float sign_ = (((floatBitsToUint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_6 = (-1.0 / (sign_ + n_3.z));
     float b_8 = ((n_3.x * n_3.y) * a_6);
-    float _e16 = (sign_1 * n_3.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_6)), (sign_1 * b_8), -(_e16)), vec3(b_8, (sign_1 + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
+    float _e16 = (sign_ * n_3.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_6)), (sign_ * b_8), -(_e16)), vec3(b_8, (sign_ + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
 }
 
 vec3 sample_cosine_hemisphere(vec3 n_4, vec2 u) {

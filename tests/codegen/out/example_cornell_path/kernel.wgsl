@@ -478,18 +478,17 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     let det = ((u_1 + v_2) + w);
     let scaled = (((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
     if occlusion {
-        let sign_ = (bitcast<u32>(det) & 2147483648u);
-        let st = bitcast<f32>((bitcast<u32>(scaled) ^ sign_));
+        let st = select(scaled, -(scaled), (det < 0f));
         let ad_1 = abs(det);
         let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        let _e180 = F32_INF;
-        return select(vec3<f32>(bitcast<f32>(_e180), 0f, 0f), vec3<f32>(tmax_1, 0f, 0f), hit_7);
+        let _e178 = F32_INF;
+        return select(vec3<f32>(bitcast<f32>(_e178), 0f, 0f), vec3<f32>(tmin, 0f, 0f), hit_7);
     }
     let rcp = (1f / det);
     let t = (scaled * rcp);
     let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t >= tmin)) && (t <= tmax_1));
-    let _e204 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e204), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_8);
+    let _e202 = F32_INF;
+    return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_8);
 }
 
 fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
@@ -979,11 +978,11 @@ fn load_PathDiffuse(offset_3: u32) -> PathDiffuse {
 }
 
 fn orthonormal_basis(n_3: vec3<f32>) -> mat3x3<f32> {
-    let sign_1 = select(1f, -1f, ((bitcast<u32>(n_3.z) & 2147483648u) != 0u));
-    let a_6 = (-1f / (sign_1 + n_3.z));
+    let sign_ = select(1f, -1f, ((bitcast<u32>(n_3.z) & 2147483648u) != 0u));
+    let a_6 = (-1f / (sign_ + n_3.z));
     let b_8 = ((n_3.x * n_3.y) * a_6);
-    let _e16 = (sign_1 * n_3.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_3.x) * a_6)), (sign_1 * b_8), -(_e16)), vec3<f32>(b_8, (sign_1 + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
+    let _e16 = (sign_ * n_3.x);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_3.x) * a_6)), (sign_ * b_8), -(_e16)), vec3<f32>(b_8, (sign_ + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
 }
 
 fn sample_cosine_hemisphere(n_4: vec3<f32>, u: vec2<f32>) -> vec3<f32> {

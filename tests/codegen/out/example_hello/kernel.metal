@@ -583,18 +583,17 @@ metal::float3 hit_triangle(
     float det = (u + v_2) + w;
     float scaled = ((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_7[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]));
     if (occlusion) {
-        uint sign = as_type<uint>(det) & 2147483648u;
-        float st = as_type<float>(as_type<uint>(scaled) ^ sign);
+        float st = (det < 0.0) ? -(scaled) : scaled;
         float ad_1 = metal::abs(det);
         bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1));
-        uint _e180 = F32_INF;
-        return hit_8 ? metal::float3(tmax_1, 0.0, 0.0) : metal::float3(as_type<float>(_e180), 0.0, 0.0);
+        uint _e178 = F32_INF;
+        return hit_8 ? metal::float3(tmin, 0.0, 0.0) : metal::float3(as_type<float>(_e178), 0.0, 0.0);
     }
     float rcp = 1.0 / det;
     float t = scaled * rcp;
     bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1);
-    uint _e204 = F32_INF;
-    return hit_9 ? metal::float3(t, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e204), 0.0, 0.0);
+    uint _e202 = F32_INF;
+    return hit_9 ? metal::float3(t, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e202), 0.0, 0.0);
 }
 
 bool accept(

@@ -478,18 +478,17 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     let det = ((u + v_2) + w);
     let scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_7[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
     if occlusion {
-        let sign_ = (bitcast<u32>(det) & 2147483648u);
-        let st = bitcast<f32>((bitcast<u32>(scaled) ^ sign_));
+        let st = select(scaled, -(scaled), (det < 0f));
         let ad_1 = abs(det);
         let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        let _e180 = F32_INF;
-        return select(vec3<f32>(bitcast<f32>(_e180), 0f, 0f), vec3<f32>(tmax_1, 0f, 0f), hit_8);
+        let _e178 = F32_INF;
+        return select(vec3<f32>(bitcast<f32>(_e178), 0f, 0f), vec3<f32>(tmin, 0f, 0f), hit_8);
     }
     let rcp = (1f / det);
     let t = (scaled * rcp);
     let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t >= tmin)) && (t <= tmax_1));
-    let _e204 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e204), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_9);
+    let _e202 = F32_INF;
+    return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_9);
 }
 
 fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {

@@ -513,18 +513,17 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     float det = ((u + v_3) + w);
     float scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
     if (occlusion) {
-        uint sign_1 = (floatBitsToUint(det) & 2147483648u);
-        float st = uintBitsToFloat((floatBitsToUint(scaled) ^ sign_1));
+        float st = ((det < 0.0) ? -(scaled) : scaled);
         float ad_1 = abs(det);
         bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        uint _e180 = F32_INF;
-        return (hit_7 ? vec3(tmax_1, 0.0, 0.0) : vec3(uintBitsToFloat(_e180), 0.0, 0.0));
+        uint _e178 = F32_INF;
+        return (hit_7 ? vec3(tmin, 0.0, 0.0) : vec3(uintBitsToFloat(_e178), 0.0, 0.0));
     }
     float rcp = (1.0 / det);
     float t_6 = (scaled * rcp);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
-    uint _e204 = F32_INF;
-    return (hit_8 ? vec3(t_6, (v_3 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e204), 0.0, 0.0));
+    uint _e202 = F32_INF;
+    return (hit_8 ? vec3(t_6, (v_3 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
@@ -1270,11 +1269,11 @@ SphereLight load_SphereLight(uint offset_10) {
 }
 
 mat3x3 orthonormal_basis(vec3 n_4) {
-    float sign_2 = (((floatBitsToUint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_7 = (-1.0 / (sign_2 + n_4.z));
+    float sign_1 = (((floatBitsToUint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_1 + n_4.z));
     float b_12 = ((n_4.x * n_4.y) * a_7);
-    float _e16 = (sign_2 * n_4.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_2 * b_12), -(_e16)), vec3(b_12, (sign_2 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
+    float _e16 = (sign_1 * n_4.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_1 * b_12), -(_e16)), vec3(b_12, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
 LightSample sphere_light(SphereLight l_2, vec3 position_3, vec3 normal_4) {

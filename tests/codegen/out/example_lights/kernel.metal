@@ -635,18 +635,17 @@ metal::float3 hit_triangle(
     float det = (u + v_3) + w;
     float scaled = ((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_8[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]));
     if (occlusion) {
-        uint sign_1 = as_type<uint>(det) & 2147483648u;
-        float st = as_type<float>(as_type<uint>(scaled) ^ sign_1);
+        float st = (det < 0.0) ? -(scaled) : scaled;
         float ad_1 = metal::abs(det);
         bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1));
-        uint _e180 = F32_INF;
-        return hit_7 ? metal::float3(tmax_1, 0.0, 0.0) : metal::float3(as_type<float>(_e180), 0.0, 0.0);
+        uint _e178 = F32_INF;
+        return hit_7 ? metal::float3(tmin, 0.0, 0.0) : metal::float3(as_type<float>(_e178), 0.0, 0.0);
     }
     float rcp = 1.0 / det;
     float t_6 = scaled * rcp;
     bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
-    uint _e204 = F32_INF;
-    return hit_8 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e204), 0.0, 0.0);
+    uint _e202 = F32_INF;
+    return hit_8 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e202), 0.0, 0.0);
 }
 
 bool accept(
@@ -1626,11 +1625,11 @@ SphereLight load_SphereLight(
 metal::float3x3 orthonormal_basis(
     metal::float3 n_4
 ) {
-    float sign_2 = ((as_type<uint>(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
-    float a_7 = -1.0 / (sign_2 + n_4.z);
+    float sign_1 = ((as_type<uint>(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_7 = -1.0 / (sign_1 + n_4.z);
     float b_12 = (n_4.x * n_4.y) * a_7;
-    float _e16 = sign_2 * n_4.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_4.x) * a_7), sign_2 * b_12, -(_e16)), metal::float3(b_12, sign_2 + ((n_4.y * n_4.y) * a_7), -(n_4.y)), n_4);
+    float _e16 = sign_1 * n_4.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_4.x) * a_7), sign_1 * b_12, -(_e16)), metal::float3(b_12, sign_1 + ((n_4.y * n_4.y) * a_7), -(n_4.y)), n_4);
 }
 
 LightSample sphere_light(

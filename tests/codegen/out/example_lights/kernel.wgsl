@@ -527,18 +527,17 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     let det = ((u + v_3) + w);
     let scaled = (((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_8[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)])));
     if occlusion {
-        let sign_1 = (bitcast<u32>(det) & 2147483648u);
-        let st = bitcast<f32>((bitcast<u32>(scaled) ^ sign_1));
+        let st = select(scaled, -(scaled), (det < 0f));
         let ad_1 = abs(det);
         let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        let _e180 = F32_INF;
-        return select(vec3<f32>(bitcast<f32>(_e180), 0f, 0f), vec3<f32>(tmax_1, 0f, 0f), hit_7);
+        let _e178 = F32_INF;
+        return select(vec3<f32>(bitcast<f32>(_e178), 0f, 0f), vec3<f32>(tmin, 0f, 0f), hit_7);
     }
     let rcp = (1f / det);
     let t_6 = (scaled * rcp);
     let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
-    let _e204 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e204), 0f, 0f), vec3<f32>(t_6, (v_3 * rcp), (w * rcp)), hit_8);
+    let _e202 = F32_INF;
+    return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_6, (v_3 * rcp), (w * rcp)), hit_8);
 }
 
 fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
@@ -1289,11 +1288,11 @@ fn load_SphereLight(offset_10: u32) -> SphereLight {
 }
 
 fn orthonormal_basis(n_4: vec3<f32>) -> mat3x3<f32> {
-    let sign_2 = select(1f, -1f, ((bitcast<u32>(n_4.z) & 2147483648u) != 0u));
-    let a_7 = (-1f / (sign_2 + n_4.z));
+    let sign_1 = select(1f, -1f, ((bitcast<u32>(n_4.z) & 2147483648u) != 0u));
+    let a_7 = (-1f / (sign_1 + n_4.z));
     let b_12 = ((n_4.x * n_4.y) * a_7);
-    let _e16 = (sign_2 * n_4.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_4.x) * a_7)), (sign_2 * b_12), -(_e16)), vec3<f32>(b_12, (sign_2 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
+    let _e16 = (sign_1 * n_4.x);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_4.x) * a_7)), (sign_1 * b_12), -(_e16)), vec3<f32>(b_12, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
 fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {

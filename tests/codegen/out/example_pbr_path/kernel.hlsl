@@ -672,18 +672,17 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     float det = ((u_3 + v_6) + w_1);
     float scaled = (((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_6 * (r_1.shear.z * b_7[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(uint(min(r_1.kz, 2u)), 2u)])));
     if (occlusion) {
-        uint sign_ = (asuint(det) & 2147483648u);
-        float st = asfloat((asuint(scaled) ^ sign_));
+        float st = ((det < 0.0) ? -(scaled) : scaled);
         float ad_1 = abs(det);
         bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1)));
-        uint _e180 = F32_INF;
-        return (hit_12 ? float3(tmax_1, 0.0, 0.0) : float3(asfloat(_e180), 0.0, 0.0));
+        uint _e178 = F32_INF;
+        return (hit_12 ? float3(tmin, 0.0, 0.0) : float3(asfloat(_e178), 0.0, 0.0));
     }
     float rcp_ = (1.0 / det);
     float t_4 = (scaled * rcp_);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
-    uint _e204 = F32_INF;
-    return (hit_13 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e204), 0.0, 0.0));
+    uint _e202 = F32_INF;
+    return (hit_13 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
@@ -1533,11 +1532,11 @@ SphereLight load_SphereLight(uint offset_8)
 
 float3x3 orthonormal_basis(float3 n_3)
 {
-    float sign_1 = (((asuint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_7 = (-1.0 / (sign_1 + n_3.z));
+    float sign_ = (((asuint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_ + n_3.z));
     float b_11 = ((n_3.x * n_3.y) * a_7);
-    float _e16 = (sign_1 * n_3.x);
-    return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_1 * b_11), -(_e16)), float3(b_11, (sign_1 + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
+    float _e16 = (sign_ * n_3.x);
+    return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_11), -(_e16)), float3(b_11, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
 LightSample sphere_light(SphereLight l_1, float3 position_2, float3 normal_3)

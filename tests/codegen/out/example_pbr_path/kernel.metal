@@ -637,18 +637,17 @@ metal::float3 hit_triangle(
     float det = (u_3 + v_6) + w_1;
     float scaled = ((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_6 * (r_1.shear[2] * b_7[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]));
     if (occlusion) {
-        uint sign = as_type<uint>(det) & 2147483648u;
-        float st = as_type<float>(as_type<uint>(scaled) ^ sign);
+        float st = (det < 0.0) ? -(scaled) : scaled;
         float ad_1 = metal::abs(det);
         bool hit_12 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (st >= (tmin * ad_1))) && (st <= (tmax_1 * ad_1));
-        uint _e180 = F32_INF;
-        return hit_12 ? metal::float3(tmax_1, 0.0, 0.0) : metal::float3(as_type<float>(_e180), 0.0, 0.0);
+        uint _e178 = F32_INF;
+        return hit_12 ? metal::float3(tmin, 0.0, 0.0) : metal::float3(as_type<float>(_e178), 0.0, 0.0);
     }
     float rcp = 1.0 / det;
     float t_4 = scaled * rcp;
     bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
-    uint _e204 = F32_INF;
-    return hit_13 ? metal::float3(t_4, v_6 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e204), 0.0, 0.0);
+    uint _e202 = F32_INF;
+    return hit_13 ? metal::float3(t_4, v_6 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e202), 0.0, 0.0);
 }
 
 bool accept(
@@ -1517,11 +1516,11 @@ SphereLight load_SphereLight(
 metal::float3x3 orthonormal_basis(
     metal::float3 n_3
 ) {
-    float sign_1 = ((as_type<uint>(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
-    float a_7 = -1.0 / (sign_1 + n_3.z);
+    float sign = ((as_type<uint>(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_7 = -1.0 / (sign + n_3.z);
     float b_11 = (n_3.x * n_3.y) * a_7;
-    float _e16 = sign_1 * n_3.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_3.x) * a_7), sign_1 * b_11, -(_e16)), metal::float3(b_11, sign_1 + ((n_3.y * n_3.y) * a_7), -(n_3.y)), n_3);
+    float _e16 = sign * n_3.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_3.x) * a_7), sign * b_11, -(_e16)), metal::float3(b_11, sign + ((n_3.y * n_3.y) * a_7), -(n_3.y)), n_3);
 }
 
 LightSample sphere_light(
