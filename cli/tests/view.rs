@@ -14,13 +14,13 @@ use rtc_runtime::image_out::read_image;
 use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
 #[path = "../../runtime/tests/common/scratch.rs"]
 mod scratch;
 
 use scratch::Scratch;
-use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
 
 const STEP: Duration = Duration::from_secs(240);
 

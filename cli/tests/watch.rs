@@ -9,13 +9,13 @@
 use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant, SystemTime};
 
 #[path = "../../runtime/tests/common/scratch.rs"]
 mod scratch;
 
 use scratch::Scratch;
-use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant, SystemTime};
 
 /// How long one reload may take before the test gives up.
 const STEP: Duration = Duration::from_secs(180);
