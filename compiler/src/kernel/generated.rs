@@ -327,6 +327,12 @@ fn node_frame_hi(header: GpuNode) -> vec3f {{
     return node_point(header.min, header.max, vec3u({max}u));
 }}
 
+/// The bounds of a quantisation frame's high corner (NODE_BOUND_MAX on each axis; its low
+/// corner's are 0): the box of a BVH's root in its own frame.
+fn node_frame_bounds() -> vec3f {{
+    return vec3f({max}.0);
+}}
+
 /// The low corner's bounds of a packed quantised box (`[lo.x | lo.y << 16, lo.z | hi.x << 16,
 /// hi.y | hi.z << 16]`).
 fn node_box_lo(p: vec3u) -> vec3u {{
@@ -589,7 +595,13 @@ mod tests {
     #[test]
     fn every_function_is_an_intrinsic_an_accessor_or_a_node_decoder() {
         let text = abi_module();
-        let decoders = ["node_point", "node_frame_hi", "node_box_lo", "node_box_hi"];
+        let decoders = [
+            "node_point",
+            "node_frame_hi",
+            "node_frame_bounds",
+            "node_box_lo",
+            "node_box_hi",
+        ];
         let mut intrinsics = 0;
         for name in text
             .lines()

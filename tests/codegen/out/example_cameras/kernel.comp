@@ -343,19 +343,19 @@ uint sobol_second_reversed(uint i) {
 
 float rand_next() {
     uint x_2 = 0u;
-    uint d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    uint d = rng_state;
+    rng_state = (d + 1u);
     uint _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
-    uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
     uint i_5 = bitfieldReverse(_e24);
     x_2 = i_5;
-    if (((d_1 & 1u) != 0u)) {
+    if (((d & 1u) != 0u)) {
         uint _e31 = sobol_second_reversed(i_5);
         x_2 = _e31;
     }
-    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
@@ -407,27 +407,27 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o = vec4(ray.origin, 1.0);
-    vec4 d_2 = vec4(ray.dir, 0.0);
+    vec4 d_1 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
     return _e25;
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_3);
+    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_2);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(kz, 2u)];
+    float dz = d_2[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
@@ -442,15 +442,21 @@ vec3 node_frame_hi(GpuNode header) {
 BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     float m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_1) >> 23u) & 255u), 1u), 253u);
-    vec3 d_4 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
+    vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
     float unit = uintBitsToFloat((e << 23u));
     vec3 floor_ = vec3(9.094947e-13);
-    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d_4, vec3(0.0)));
-    vec3 inv = (vec3(1.0) / mix(d_4, (s_3 * floor_), lessThan(abs(d_4), floor_)));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
+    vec3 inv = (vec3(1.0) / mix(d_3, (s_3 * floor_), lessThan(abs(d_3), floor_)));
     vec3 rel = (origin_1 - ray_2.origin);
     vec3 start = (rel * inv);
     vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
+BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
+    vec3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
+    return _e7;
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -486,7 +492,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_8 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_4, Candidate c) {
     return true;
 }
 
@@ -538,7 +544,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -546,112 +552,111 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_1 = inst_2.blas_root;
-    GpuNode header_1 = _group_0_binding_2_cs[base_1];
-    vec3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
+    GpuNode header_2 = _group_0_binding_2_cs[base_1];
+    BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     while(true) {
-        uint _e22 = child;
-        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
-            uint _e27 = child;
-            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e34 = child;
-            uint first = (_e34 & NODE_FIRST_MASK);
+        uint _e17 = child;
+        if (((_e17 & NODE_LEAF_BIT) != 0u)) {
+            uint _e22 = child;
+            uint count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e29 = child;
+            uint first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = (_e80 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if ((_e39 >= count_1)) {
+                uint _e34 = k;
+                if ((_e34 >= count_1)) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e43);
-                float _e47 = best.t;
-                vec3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                uint _e54 = F32_INF;
-                if ((_e51.x < uintBitsToFloat(_e54))) {
-                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e63.w);
+                uint _e38 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e38);
+                float _e42 = best.t;
+                vec3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                uint _e49 = F32_INF;
+                if ((_e46.x < uintBitsToFloat(_e49))) {
+                    vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
-                    bool _e78 = accept(inst_2, world_ray, c_6);
-                    if (_e78) {
+                    Candidate c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_2, world_ray, c_6);
+                    if (_e73) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e83)];
-            float _e89 = best.t;
-            vec2 _e90 = children_entry(n_6, _e17, _e89);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
+            uint _e78 = child;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e78)];
+            float _e84 = best.t;
+            vec2 _e85 = children_entry(n_6, _e12, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < uintBitsToFloat(_e89)) && (tr < uintBitsToFloat(_e93)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e110 = sp_1;
-                if ((_e110 < BLAS_STACK)) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack[min((TLAS_STACK + _e114), 67u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 67u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tl < uintBitsToFloat(_e126))) {
+            uint _e121 = F32_INF;
+            if ((tl < uintBitsToFloat(_e121))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if ((tr < uintBitsToFloat(_e131))) {
+            uint _e126 = F32_INF;
+            if ((tr < uintBitsToFloat(_e126))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        uvec2 _e137 = pop(TLAS_STACK, _e136);
-        if ((_e137.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        uvec2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_6, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_6, ray_5);
+    Ray _e7 = to_object(inst_6, ray_6);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -710,14 +715,14 @@ vec3 normal_to_world(GpuInstance inst_5, vec3 n_2) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_6, Candidate c_1) {
+Hit finish_hit(Ray ray_7, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_7.origin, (ray_7.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_7.origin + (ray_7.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -758,7 +763,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_7.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -811,42 +816,25 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_7 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_8 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_7 = _e7;
-    ray_7.depth = 0u;
-    ray_7.kind = RAY_CAMERA;
-    vec3 _e15 = ray_7.origin;
+    ray_8 = _e7;
+    ray_8.depth = 0u;
+    ray_8.kind = RAY_CAMERA;
+    vec3 _e15 = ray_8.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_7.medium = _e17;
-    Ray _e18 = ray_7;
+    ray_8.medium = _e17;
+    Ray _e18 = ray_8;
     return _e18;
 }
 
-vec3 safe_inverse(vec3 d) {
-    vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_5 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_5 * tiny), lessThan(abs(d), tiny));
-    return (vec3(1.0) / dd);
+vec3 node_frame_bounds() {
+    return vec3(65535.0);
 }
 
-float slab(vec3 lo_1, vec3 hi_1, vec3 origin_3, vec3 inv_dir, float tmin_1, float tmax_4) {
-    vec3 t0_1 = ((lo_1 - origin_3) * inv_dir);
-    vec3 t1_1 = ((hi_1 - origin_3) * inv_dir);
-    vec3 near_3 = min(t0_1, t1_1);
-    vec3 far_3 = max(t0_1, t1_1);
-    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
-    if ((enter_1 <= exit_1)) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return uintBitsToFloat(_e30);
-}
-
-Candidate intersect_scene(Ray ray_8, bool shadow_2) {
+Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -854,94 +842,90 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_8.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_8.dir);
     uint base_2 = frame_3.tlas_root;
-    GpuNode header_2 = _group_0_binding_2_cs[base_2];
-    vec3 origin_4 = header_2.min_;
-    vec3 scale_2 = header_2.max_;
-    vec3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
-    uint _e30 = F32_INF;
-    if ((_e28 == uintBitsToFloat(_e30))) {
-        Candidate _e33 = best_2;
-        return _e33;
+    GpuNode header_3 = _group_0_binding_2_cs[base_2];
+    BoxRay _e19 = header_box_ray(header_3, ray_9);
+    vec3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
+    uint _e29 = F32_INF;
+    if ((_e27 == uintBitsToFloat(_e29))) {
+        Candidate _e32 = best_2;
+        return _e32;
     }
-    vec3 _e34 = node_frame_hi(header_2);
-    BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_8);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     while(true) {
-        uint _e41 = child_1;
-        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
-            uint _e46 = child_1;
-            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_8, _e58, shadow_2);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if ((shadow_2 && (_e61 != NO_HIT))) {
-                    Candidate _e65 = best_2;
-                    return _e65;
+        uint _e37 = child_1;
+        if (((_e37 & NODE_LEAF_BIT) != 0u)) {
+            uint _e42 = child_1;
+            if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if ((shadow_2 && (_e57 != NO_HIT))) {
+                    Candidate _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e66)];
-            float _e72 = best_2.t;
-            vec2 _e73 = children_entry(n_7, _e36, _e72);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e62)];
+            float _e68 = best_2.t;
+            vec2 _e69 = children_entry(n_7, _e19, _e68);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if (((tl_1 < uintBitsToFloat(_e77)) && (tr_1 < uintBitsToFloat(_e81)))) {
+            if (((tl_1 < uintBitsToFloat(_e73)) && (tr_1 < uintBitsToFloat(_e77)))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e92 = sp_2;
-                if ((_e92 < TLAS_STACK)) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack[min(_e95, 67u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                uint _e88 = sp_2;
+                if ((_e88 < TLAS_STACK)) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack[min(_e91, 67u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if ((tl_1 < uintBitsToFloat(_e106))) {
+            uint _e102 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e102))) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((tr_1 < uintBitsToFloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e107))) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        uvec2 _e117 = pop(0u, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e112 = sp_2;
+        uvec2 _e113 = pop(0u, _e112);
+        if ((_e113.x == NO_HIT)) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    return _e123;
+    Candidate _e119 = best_2;
+    return _e119;
 }
 
 SkyGradient load_SkyGradient(uint offset_2) {
@@ -957,8 +941,8 @@ SkyGradient load_SkyGradient(uint offset_2) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_6, Ray ray_9) {
-    vec3 _e3 = normalize_vec3f(ray_9.dir);
+vec3 sky_gradient(SkyGradient b_6, Ray ray_10) {
+    vec3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_6.horizon, b_6.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -966,18 +950,18 @@ vec3 sky_gradient(SkyGradient b_6, Ray ray_9) {
     return mix(b_6.horizon, b_6.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_10) {
+vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_11) {
     SkyGradient _e2 = load_SkyGradient(offset_3);
-    vec3 _e3 = sky_gradient(_e2, ray_10);
+    vec3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
-vec3 miss(Ray ray_11) {
+vec3 miss(Ray ray_12) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -988,8 +972,8 @@ Lambert load_Lambert(uint offset_4) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 shading_normal(Ray ray_12, Hit hit_1) {
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
+vec3 shading_normal(Ray ray_13, Hit hit_1) {
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1032,15 +1016,15 @@ vec3 step_toward(vec3 x_3, vec3 s) {
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_5 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_10 = (n_3 * vec3(d_5));
+    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    vec3 offset_10 = (n_3 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_10), offset_10);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     vec3 n_4 = vec3(0.0);
-    float tmax_5 = 0.0;
+    float tmax_4 = 0.0;
     n_4 = normal_1;
     vec3 _e5 = n_4;
     if ((dot(dir_1, _e5) < 0.0)) {
@@ -1053,16 +1037,16 @@ Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     vec3 _e22 = n_4;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = uintBitsToFloat(_e25);
+    tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
         vec3 light = (position + (dir_1 * vec3(dist)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
+        float dd = dot(dir_1, dir_1);
+        float along_1 = (dot((light - _e23), dir_1) / dd);
         vec3 l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
-        tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd)));
     }
-    float _e59 = tmax_5;
+    float _e59 = tmax_4;
     return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
@@ -1109,10 +1093,10 @@ LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
     return _e28;
 }
 
-vec3 lambert_shade(Lambert m, Ray ray_13, Hit hit_2) {
+vec3 lambert_shade(Lambert m, Ray ray_14, Hit hit_2) {
     vec3 color = vec3(0.0);
     uint i_3 = 0u;
-    vec3 _e3 = shading_normal(ray_13, hit_2);
+    vec3 _e3 = shading_normal(ray_14, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1136,39 +1120,39 @@ vec3 lambert_shade(Lambert m, Ray ray_13, Hit hit_2) {
     return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_14, Hit hit_3, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_15, Hit hit_3, vec3 secondary) {
     Lambert _e3 = load_Lambert(offset_7);
-    vec3 _e4 = lambert_shade(_e3, ray_14, hit_3);
+    vec3 _e4 = lambert_shade(_e3, ray_15, hit_3);
     return _e4;
 }
 
-vec3 shade_direct(Ray ray_15, Candidate c_2) {
+vec3 shade_direct(Ray ray_16, Candidate c_2) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_15, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_16, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_4, uint offset_8, Ray ray_16, float t, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_4, uint offset_8, Ray ray_17, float t, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_17, float t_1, vec3 radiance_1) {
+vec3 through_medium(Ray ray_18, float t_1, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_17.medium == 0u)) {
+    if ((ray_18.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_17.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_18.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_18, t_1, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_4) {
+void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_19, Hit hit_4) {
     return;
 }
 
@@ -1195,7 +1179,7 @@ vec3 trace(Ray camera_ray) {
     float t_2 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_19 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1233,7 +1217,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_19 = camera_ray;
+    ray_20 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1249,10 +1233,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_19;
+            Ray _e67 = ray_20;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_19;
+            Ray _e70 = ray_20;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1386,7 +1370,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_9, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_19 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_20 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -418,19 +418,19 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint x_2 = {};
-    uint d_2 = rng_state;
-    rng_state = d_2 + 1u;
+    uint d_1 = rng_state;
+    rng_state = d_1 + 1u;
     uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)];
-    uint _e16 = pcg_hash(_e10 ^ ((d_2 >> 1u) * 2654435769u));
+    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_8 = metal::reverse_bits(_e24);
     x_2 = i_8;
-    if ((d_2 & 1u) != 0u) {
+    if ((d_1 & 1u) != 0u) {
         uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
-    uint scramble = _e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
@@ -513,9 +513,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o_1 = metal::float4(ray.origin, 1.0);
-    metal::float4 d_3 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o_1), metal::dot(inst.world_to_object_1_, o_1), metal::dot(inst.world_to_object_2_, o_1));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_3), metal::dot(inst.world_to_object_1_, d_3), metal::dot(inst.world_to_object_2_, d_3));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
@@ -523,19 +523,19 @@ Ray to_object(
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_4 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_4);
+    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_3);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_4[metal::min(kz, 2u)];
+    float dz = d_3[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_4) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_4[metal::min(kx, 2u)] / dz, d_4[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 node_point(
@@ -561,15 +561,24 @@ BoxRay box_ray(
 ) {
     float m_6 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_6) >> 23u) & 255u, 1u), 253u);
-    metal::float3 d_5 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
     float unit = as_type<float>(e << 23u);
     metal::float3 floor = metal::float3(0.0000000000009094947);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_5 < metal::float3(0.0));
-    metal::float3 inv = metal::float3(1.0) / metal::select(d_5, s_4 * floor, metal::abs(d_5) < floor);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_4 * floor, metal::abs(d_4) < floor);
     metal::float3 rel = origin_1 - ray_2.origin;
     metal::float3 start = rel * inv;
     metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
     return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
+BoxRay header_box_ray(
+    GpuNode header_1,
+    Ray ray_3
+) {
+    metal::float3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
+    return _e7;
 }
 
 metal::float3 hit_triangle(
@@ -689,7 +698,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_3,
+    Ray ray_4,
     Candidate c,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -701,9 +710,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_6 = instances[c.slot];
-    float _e11 = point_error(ray_3.origin, ray_3.dir * metal::float3(c.t));
+    float _e11 = point_error(ray_4.origin, ray_4.dir * metal::float3(c.t));
     hit_error = _e11;
-    hit = Hit {ray_3.origin + (ray_3.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
+    hit = Hit {ray_4.origin + (ray_4.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
     n_geo = c.normal;
     n_shade = c.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -744,7 +753,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_3.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_4.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -804,31 +813,31 @@ void absorb_query(
 
 bool fog_any_hit(
     Fog m,
-    Ray ray_4,
+    Ray ray_5,
     Hit hit_1,
     thread type_4& scratch
 ) {
     absorb_query(m.density, scratch);
-    return ray_4.kind != RAY_SHADOW;
+    return ray_5.kind != RAY_SHADOW;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_5,
+    Ray ray_6,
     Hit hit_2,
     thread type_4& scratch,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_3, params, _buffer_sizes);
-    bool _e4 = fog_any_hit(_e3, ray_5, hit_2, scratch);
+    bool _e4 = fog_any_hit(_e3, ray_6, hit_2, scratch);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_4,
-    Ray ray_6,
+    Ray ray_7,
     Candidate c_1,
     thread type_4& scratch,
     device type_5 const& params,
@@ -840,13 +849,13 @@ bool accept(
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_6, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e10 = finish_hit(ray_7, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        if (ray_6.kind == RAY_SHADOW) {
+        if (ray_7.kind == RAY_SHADOW) {
             scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = _e10.front_face ? 1u : 2u;
-            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_6.dir));
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_7.dir));
         }
-        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10, scratch, params, _buffer_sizes);
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10, scratch, params, _buffer_sizes);
         scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
@@ -924,7 +933,7 @@ Candidate intersect_mesh(
     GpuInstance inst_5,
     uint slot_2,
     Ray world_ray,
-    Ray ray_7,
+    Ray ray_8,
     Candidate best_in,
     bool shadow,
     thread type_4& scratch,
@@ -945,23 +954,22 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_7);
+    TriangleRay _e7 = prepare_triangle_ray(ray_8);
     uint base_1 = inst_5.blas_root;
-    GpuNode header_1 = nodes[base_1];
-    metal::float3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_7);
+    GpuNode header_2 = nodes[base_1];
+    BoxRay _e12 = header_box_ray(header_2, ray_8);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            uint _e27 = child;
-            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e34 = child;
-            uint first = _e34 & NODE_FIRST_MASK;
+        uint _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            uint _e22 = child;
+            uint count_1 = (_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e29 = child;
+            uint first = _e29 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -969,88 +977,88 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = _e80 + 1u;
+                    uint _e75 = k;
+                    k = _e75 + 1u;
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if (_e39 >= count_1) {
+                uint _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = (inst_5.triangle_offset + first) + _e43;
-                float _e47 = best.t;
-                metal::float3 _e51 = hit_triangle(_e7, prim, ray_7.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
-                uint _e54 = F32_INF;
-                if (_e51.x < as_type<float>(_e54)) {
-                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e63.w);
+                uint _e38 = k;
+                uint prim = (inst_5.triangle_offset + first) + _e38;
+                float _e42 = best.t;
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_8.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_5.object + tag) - 1u) : slot_2;
-                    Candidate c_6 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
-                    bool _e78 = accept(inst_5, world_ray, c_6, scratch, params, instances, triangles, hit_error, attributes, _buffer_sizes);
-                    if (_e78) {
+                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_5, world_ray, c_6, scratch, params, instances, triangles, hit_error, attributes, _buffer_sizes);
+                    if (_e73) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_6 = nodes[base_1 + _e83];
-            float _e89 = best.t;
-            metal::float2 _e90 = children_entry(n_6, _e17, _e89, F32_INF);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
+            uint _e78 = child;
+            GpuNode n_6 = nodes[base_1 + _e78];
+            float _e84 = best.t;
+            metal::float2 _e85 = children_entry(n_6, _e12, _e84, F32_INF);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 73u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = _e121 + 1u;
+                uint _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 73u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = _e116 + 1u;
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tl < as_type<float>(_e126)) {
+            uint _e121 = F32_INF;
+            if (tl < as_type<float>(_e121)) {
                 child = n_6.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if (tr < as_type<float>(_e131)) {
+            uint _e126 = F32_INF;
+            if (tr < as_type<float>(_e126)) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
-        if (_e137.x == NO_HIT) {
+        uint _e131 = sp_1;
+        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_8,
+    Ray ray_9,
     Candidate best_1,
     bool shadow_1,
     thread type_4& scratch,
@@ -1066,12 +1074,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_7 = instances[slot_3];
-    Ray _e7 = to_object(inst_7, ray_8);
+    Ray _e7 = to_object(inst_7, ray_9);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1158,53 +1166,27 @@ Ray sample_camera_ray(
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_9 = {};
+    Ray ray_10 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_9 = _e7;
-    ray_9.depth = 0u;
-    ray_9.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_9.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_10.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-    ray_9.medium = _e17;
-    Ray _e18 = ray_9;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
     return _e18;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
+metal::float3 node_frame_bounds(
 ) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_7 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_7 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
-float slab(
-    metal::float3 lo_1,
-    metal::float3 hi_1,
-    metal::float3 origin_3,
-    metal::float3 inv_dir,
-    float tmin_1,
-    float tmax_4,
-    thread uint& F32_INF
-) {
-    metal::float3 t0_1 = (lo_1 - origin_3) * inv_dir;
-    metal::float3 t1_1 = (hi_1 - origin_3) * inv_dir;
-    metal::float3 near_3 = metal::min(t0_1, t1_1);
-    metal::float3 far_3 = metal::max(t0_1, t1_1);
-    float enter_1 = metal::max(metal::max(near_3.x, near_3.y), metal::max(near_3.z, tmin_1));
-    float exit_1 = metal::min(metal::min(far_3.x, far_3.y) * 1.0000005, metal::min(far_3.z * 1.0000005, tmax_4));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    return metal::float3(65535.0);
 }
 
 Candidate intersect_scene(
-    Ray ray_10,
+    Ray ray_11,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1226,116 +1208,112 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_10.dir);
     uint base_2 = frame_3.tlas_root;
-    GpuNode header_2 = nodes[base_2];
-    metal::float3 origin_4 = header_2.min;
-    metal::float3 scale_2 = header_2.max;
-    metal::float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
-    uint _e30 = F32_INF;
-    if (_e28 == as_type<float>(_e30)) {
-        Candidate _e33 = best_2;
-        return _e33;
+    GpuNode header_3 = nodes[base_2];
+    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    metal::float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
+    uint _e29 = F32_INF;
+    if (_e27 == as_type<float>(_e29)) {
+        Candidate _e32 = best_2;
+        return _e32;
     }
-    metal::float3 _e34 = node_frame_hi(header_2);
-    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_10);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            uint _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_10, _e58, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    Candidate _e65 = best_2;
-                    return _e65;
+        uint _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            uint _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_11, _e54, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    Candidate _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_7 = nodes[base_2 + _e66];
-            float _e72 = best_2.t;
-            metal::float2 _e73 = children_entry(n_7, _e36, _e72, F32_INF);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_7 = nodes[base_2 + _e62];
+            float _e68 = best_2.t;
+            metal::float2 _e69 = children_entry(n_7, _e19, _e68, F32_INF);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
+            if ((tl_1 < as_type<float>(_e73)) && (tr_1 < as_type<float>(_e77))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e92 = sp_2;
-                if (_e92 < TLAS_STACK) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack.inner[metal::min(_e95, 73u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = _e101 + 1u;
+                uint _e88 = sp_2;
+                if (_e88 < TLAS_STACK) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack.inner[metal::min(_e91, 73u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = _e97 + 1u;
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if (tl_1 < as_type<float>(_e106)) {
+            uint _e102 = F32_INF;
+            if (tl_1 < as_type<float>(_e102)) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if (tr_1 < as_type<float>(_e111)) {
+            uint _e107 = F32_INF;
+            if (tr_1 < as_type<float>(_e107)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e112 = sp_2;
+        metal::uint2 _e113 = pop(0u, _e112, traversal_stack);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    return _e123;
+    Candidate _e119 = best_2;
+    return _e119;
 }
 
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_4,
-    Ray ray_11
+    Ray ray_12
 ) {
     return metal::float3 {};
 }
 
 metal::float3 miss(
-    Ray ray_12,
+    Ray ray_13,
     constant FrameUniforms& frame
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1349,7 +1327,7 @@ void shading_medium(
 
 metal::float3 fog_shade(
     Fog m_1,
-    Ray ray_13,
+    Ray ray_14,
     Hit hit_3,
     metal::float3 secondary
 ) {
@@ -1368,10 +1346,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_4
 ) {
-    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
     return metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1431,8 +1409,8 @@ metal::float3 offset_origin(
     metal::float3 n_3,
     float error
 ) {
-    float d_6 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_11 = n_3 * metal::float3(d_6);
+    float d_5 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_11 = n_3 * metal::float3(d_5);
     metal::float3 _e17 = step_toward(p_5 + offset_11, offset_11);
     return _e17;
 }
@@ -1446,7 +1424,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
-    float tmax_5 = {};
+    float tmax_4 = {};
     n_4 = normal_1;
     metal::float3 _e5 = n_4;
     if (metal::dot(dir_1, _e5) < 0.0) {
@@ -1459,21 +1437,21 @@ Ray shadow_ray(
     metal::float3 _e22 = n_4;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = as_type<float>(_e25);
+    tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
         metal::float3 light_1 = position + (dir_1 * metal::float3(dist));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light_1 - _e23, dir_1) / dd_1;
+        float dd = metal::dot(dir_1, dir_1);
+        float along_1 = metal::dot(light_1 - _e23, dir_1) / dd;
         metal::float3 l_1 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
-        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd));
     }
-    float _e59 = tmax_5;
+    float _e59 = tmax_4;
     return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_transmittance(
-    Ray ray_15,
+    Ray ray_16,
     uint medium_1,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1497,15 +1475,15 @@ float shadow_transmittance(
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                Hit start_1 = Hit {ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
+                Hit start_1 = Hit {ray_16.origin, 0.0, -(ray_16.dir), -(ray_16.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1, scratch, params, _buffer_sizes);
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_16, start_1, scratch, params, _buffer_sizes);
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    Candidate _e75 = intersect_scene(ray_15, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Candidate _e75 = intersect_scene(ray_16, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     if (_e75.slot != NO_HIT) {
         return 0.0;
     }
@@ -1516,11 +1494,11 @@ float shadow_transmittance(
     uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001 * as_type<float>(_e101))) {
         uint _e107 = F32_INF;
-        if (ray_15.tmax == as_type<float>(_e107)) {
+        if (ray_16.tmax == as_type<float>(_e107)) {
             return 0.0;
         }
         float _e111 = depth;
-        depth = _e111 + (net_1 * (ray_15.tmax * metal::length(ray_15.dir)));
+        depth = _e111 + (net_1 * (ray_16.tmax * metal::length(ray_16.dir)));
     }
     float _e118 = depth;
     return metal::exp(-(metal::max(_e118, 0.0)));
@@ -1638,7 +1616,7 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_5,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1655,7 +1633,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_16, hit_5);
+    metal::float3 _e3 = shading_normal(ray_17, hit_5);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_3 = 0u;
@@ -1685,7 +1663,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_8,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1704,12 +1682,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
+            metal::float3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_17, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1720,7 +1698,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_18,
+    Ray ray_19,
     Candidate c_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1736,9 +1714,9 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    shading_medium(ray_18.medium, scratch);
-    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    shading_medium(ray_19.medium, scratch);
+    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e12;
 }
 
@@ -1770,7 +1748,7 @@ metal::float3 fog_inscatter(
     uint i_5,
     metal::float3 o,
     metal::float3 dir_3,
-    float d_1,
+    float d,
     float trans,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1788,7 +1766,7 @@ metal::float3 fog_inscatter(
 ) {
     float s_1 = {};
     float sigma_1 = m_3.density;
-    bool tiny_1 = (sigma_1 * d_1) < 0.001;
+    bool tiny = (sigma_1 * d) < 0.001;
     LightSample _e12 = sample_light_unoccluded_query(i_5, o, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     metal::float3 c_7 = _e12.dir * metal::float3(_e12.dist);
     float delta = metal::dot(c_7, dir_3);
@@ -1797,21 +1775,21 @@ metal::float3 fog_inscatter(
     bool equi = _e22 && (h_1 > 0.00000000000000000001);
     float ta = metal::atan2(-(delta), h_1);
     uint _e34 = F32_INF;
-    float tb = (d_1 == as_type<float>(_e34)) ? (0.5 * PI) : metal::atan2(d_1 - delta, h_1);
+    float tb = (d == as_type<float>(_e34)) ? (0.5 * PI) : metal::atan2(d - delta, h_1);
     float w_3 = equi ? 0.5 : 0.0;
     metal::float2 _e41 = rand2_next(scratch, rng_state);
     s_1 = -(metal::log(1.0 - (_e41.y * (1.0 - trans)))) / sigma_1;
-    if (tiny_1) {
-        s_1 = _e41.y * d_1;
+    if (tiny) {
+        s_1 = _e41.y * d;
     }
     if (_e41.x < w_3) {
         s_1 = delta + (h_1 * metal::tan(metal::mix(ta, tb, _e41.y)));
     }
     float _e61 = s_1;
-    s_1 = metal::min(metal::max(_e61, 0.0), d_1);
+    s_1 = metal::min(metal::max(_e61, 0.0), d);
     float _e66 = s_1;
     float e_4 = metal::exp(-(sigma_1) * _e66);
-    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_4) / (1.0 - trans));
+    float p_free = tiny ? (1.0 / d) : ((sigma_1 * e_4) / (1.0 - trans));
     float _e76 = s_1;
     float r_3 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0);
@@ -1822,7 +1800,7 @@ metal::float3 fog_inscatter(
 
 metal::float3 fog_medium(
     Fog m_4,
-    Ray ray_19,
+    Ray ray_20,
     float t,
     metal::float3 radiance,
     constant FrameUniforms& frame,
@@ -1841,12 +1819,12 @@ metal::float3 fog_medium(
 ) {
     metal::float3 light = {};
     uint i_6 = {};
-    float len = metal::length(ray_19.dir);
+    float len = metal::length(ray_20.dir);
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
-    float d_7 = t * len;
-    float trans_1 = metal::exp(-(m_4.density) * d_7);
+    float d_6 = t * len;
+    float trans_1 = metal::exp(-(m_4.density) * d_6);
     light = metal::float3(0.0);
     uint _e23 = light_count_query(frame);
     i_6 = 0u;
@@ -1866,7 +1844,7 @@ metal::float3 fog_medium(
         }
         metal::float3 _e27 = light;
         uint _e28 = i_6;
-        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, ray_19.dir / metal::float3(len), d_7, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_20.origin, ray_20.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1876,7 +1854,7 @@ metal::float3 fog_medium(
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_9,
-    Ray ray_20,
+    Ray ray_21,
     float t_1,
     metal::float3 radiance_1,
     constant FrameUniforms& frame,
@@ -1894,12 +1872,12 @@ metal::float3 dispatch_medium(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e4 = load_Fog(offset_9, params, _buffer_sizes);
-    metal::float3 _e5 = fog_medium(_e4, ray_20, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e5 = fog_medium(_e4, ray_21, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e5;
 }
 
 metal::float3 through_medium(
-    Ray ray_21,
+    Ray ray_22,
     float t_2,
     metal::float3 radiance_2,
     constant FrameUniforms& frame,
@@ -1919,15 +1897,15 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if (ray_21.medium == 0u) {
+    if (ray_22.medium == 0u) {
         return radiance_2;
     }
-    GpuInstance inst_10 = instances[ray_21.medium - 1u];
+    GpuInstance inst_10 = instances[ray_22.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    shading_medium(ray_21.medium, scratch);
-    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    shading_medium(ray_22.medium, scratch);
+    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_22, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e22;
 }
 
@@ -1948,20 +1926,20 @@ void rt_spawn(
 
 void fog_rays(
     Fog m_5,
-    Ray ray_22,
+    Ray ray_23,
     Hit hit_7,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    rt_spawn(ray_22.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
+    rt_spawn(ray_23.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_10,
-    Ray ray_23,
+    Ray ray_24,
     Hit hit_8,
     device type_5 const& params,
     thread type_16& spawn_dirs,
@@ -1970,7 +1948,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_10, params, _buffer_sizes);
-    fog_rays(_e3, ray_23, hit_8, spawn_dirs, spawn_weights, spawn_count);
+    fog_rays(_e3, ray_24, hit_8, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -2024,7 +2002,7 @@ metal::float3 trace(
     float t_3 = {};
     type_17 stack = {};
     uint depth_1 = {};
-    Ray ray_24 = {};
+    Ray ray_25 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2064,7 +2042,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth_1 = 0u;
-    ray_24 = camera_ray;
+    ray_25 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2083,10 +2061,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_24;
+            Ray _e67 = ray_25;
             Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_24;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2269,7 +2247,7 @@ metal::float3 trace(
             metal::float3 _e372 = spawn_origin(hit_13, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_24 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
+            ray_25 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
         } else {
             Ray _e387 = stack.inner[metal::min(top_1, 2u)].ray;
             s_ray = _e387;

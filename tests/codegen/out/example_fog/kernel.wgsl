@@ -358,19 +358,19 @@ fn sobol_second_reversed(i: u32) -> u32 {
 fn rand_next() -> f32 {
     var x_2: u32;
 
-    let d_2 = rng_state;
-    rng_state = (d_2 + 1u);
+    let d_1 = rng_state;
+    rng_state = (d_1 + 1u);
     let _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
-    let _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
+    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     let _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
     let i_8 = reverseBits(_e24);
     x_2 = i_8;
-    if ((d_2 & 1u) != 0u) {
+    if ((d_1 & 1u) != 0u) {
         let _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
-    let scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     let _e45 = x_2;
     let _e46 = laine_karras(_e45, scramble);
     return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
@@ -424,27 +424,27 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o_1 = vec4<f32>(ray.origin, 1f);
-    let d_3 = vec4<f32>(ray.dir, 0f);
+    let d_2 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_3), dot(inst.world_to_object_1_, d_3), dot(inst.world_to_object_2_, d_3));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     let _e25 = r;
     return _e25;
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_4 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_4);
+    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_3);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_4[min(kz, 2u)];
+    let dz = d_3[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_4) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_4[min(kx, 2u)] / dz), (d_4[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
@@ -459,15 +459,21 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
 fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
     let m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_6) >> 23u) & 255u), 1u), 253u);
-    let d_5 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
+    let d_4 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
     let unit = bitcast<f32>((e << 23u));
     let floor_ = vec3(0.0000000000009094947f);
-    let s_4 = select(vec3(1f), vec3(-1f), (d_5 < vec3(0f)));
-    let inv = (vec3(1f) / select(d_5, (s_4 * floor_), (abs(d_5) < floor_)));
+    let s_4 = select(vec3(1f), vec3(-1f), (d_4 < vec3(0f)));
+    let inv = (vec3(1f) / select(d_4, (s_4 * floor_), (abs(d_4) < floor_)));
     let rel = (origin_1 - ray_2.origin);
     let start = (rel * inv);
     let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
+fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
+    let _e4 = node_frame_hi(header_1);
+    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
+    return _e7;
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -557,15 +563,15 @@ fn normal_to_world(inst_3: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_3: Ray, c: Candidate) -> Hit {
+fn finish_hit(ray_4: Ray, c: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_6 = instances[c.slot];
-    let _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c.t)));
+    let _e11 = point_error(ray_4.origin, (ray_4.dir * vec3(c.t)));
     hit_error = _e11;
-    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_6.object, c.primitive);
+    hit = Hit((ray_4.origin + (ray_4.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_6.object, c.primitive);
     n_geo = c.normal;
     n_shade = c.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -606,7 +612,7 @@ fn finish_hit(ray_3: Ray, c: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_3.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_4.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -656,27 +662,27 @@ fn absorb_query(density: f32) {
     return;
 }
 
-fn fog_any_hit(m: Fog, ray_4: Ray, hit_1: Hit) -> bool {
+fn fog_any_hit(m: Fog, ray_5: Ray, hit_1: Hit) -> bool {
     absorb_query(m.density);
-    return (ray_4.kind != RAY_SHADOW);
+    return (ray_5.kind != RAY_SHADOW);
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_5: Ray, hit_2: Hit) -> bool {
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_6: Ray, hit_2: Hit) -> bool {
     let _e3 = load_Fog(offset_3);
-    let _e4 = fog_any_hit(_e3, ray_5, hit_2);
+    let _e4 = fog_any_hit(_e3, ray_6, hit_2);
     return _e4;
 }
 
-fn accept(inst_4: GpuInstance, ray_6: Ray, c_1: Candidate) -> bool {
+fn accept(inst_4: GpuInstance, ray_7: Ray, c_1: Candidate) -> bool {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e10 = finish_hit(ray_6, c_1);
+        let _e10 = finish_hit(ray_7, c_1);
         hit_error = shaded;
-        if (ray_6.kind == RAY_SHADOW) {
+        if (ray_7.kind == RAY_SHADOW) {
             scratch[min(SCRATCH_ABSORB, 14u)] = select(2u, 1u, _e10.front_face);
-            scratch[min(SCRATCH_ABSORB_T, 14u)] = bitcast<u32>((c_1.t * length(ray_6.dir)));
+            scratch[min(SCRATCH_ABSORB_T, 14u)] = bitcast<u32>((c_1.t * length(ray_7.dir)));
         }
-        let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
+        let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
@@ -731,7 +737,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -740,111 +746,110 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_7);
+    let _e7 = prepare_triangle_ray(ray_8);
     let base_1 = inst_5.blas_root;
-    let header_1 = nodes[base_1];
-    let _e14 = node_frame_hi(header_1);
-    let _e17 = box_ray(header_1.min, header_1.max, (_e14 - header_1.min), ray_7);
+    let header_2 = nodes[base_1];
+    let _e12 = header_box_ray(header_2, ray_8);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     loop {
-        let _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            let _e27 = child;
-            let count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            let _e34 = child;
-            let first = (_e34 & NODE_FIRST_MASK);
+        let _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            let _e22 = child;
+            let count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            let _e29 = child;
+            let first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             loop {
-                let _e39 = k;
-                if (_e39 >= count_1) {
+                let _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                let _e43 = k;
-                let prim = ((inst_5.triangle_offset + first) + _e43);
-                let _e47 = best.t;
-                let _e51 = hit_triangle(_e7, prim, ray_7.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                let _e54 = F32_INF;
-                if (_e51.x < bitcast<f32>(_e54)) {
-                    let _e63 = triangles[((prim * 3u) + 1u)];
-                    let tag = bitcast<u32>(_e63.w);
+                let _e38 = k;
+                let prim = ((inst_5.triangle_offset + first) + _e38);
+                let _e42 = best.t;
+                let _e46 = hit_triangle(_e7, prim, ray_8.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e49 = F32_INF;
+                if (_e46.x < bitcast<f32>(_e49)) {
+                    let _e58 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_2, ((inst_5.object + tag) - 1u), (tag != 0u));
-                    let c_6 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0f));
-                    let _e78 = accept(inst_5, world_ray, c_6);
-                    if _e78 {
+                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_5, world_ray, c_6);
+                    if _e73 {
                         best = c_6;
                         if shadow {
-                            let _e79 = best;
-                            return _e79;
+                            let _e74 = best;
+                            return _e74;
                         }
                     }
                 }
                 continuing {
-                    let _e80 = k;
-                    k = (_e80 + 1u);
+                    let _e75 = k;
+                    k = (_e75 + 1u);
                 }
             }
         } else {
-            let _e83 = child;
-            let n_6 = nodes[(base_1 + _e83)];
-            let _e89 = best.t;
-            let _e90 = children_entry(n_6, _e17, _e89);
-            let tl = _e90.x;
-            let tr = _e90.y;
-            let _e94 = F32_INF;
-            let _e98 = F32_INF;
-            if ((tl < bitcast<f32>(_e94)) && (tr < bitcast<f32>(_e98))) {
+            let _e78 = child;
+            let n_6 = nodes[(base_1 + _e78)];
+            let _e84 = best.t;
+            let _e85 = children_entry(n_6, _e12, _e84);
+            let tl = _e85.x;
+            let tr = _e85.y;
+            let _e89 = F32_INF;
+            let _e93 = F32_INF;
+            if ((tl < bitcast<f32>(_e89)) && (tr < bitcast<f32>(_e93))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                let _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    let _e114 = sp_1;
-                    let _e116 = far;
-                    traversal_stack[min((TLAS_STACK + _e114), 73u)] = _e116;
-                    let _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                let _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    let _e109 = sp_1;
+                    let _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 73u)] = _e111;
+                    let _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                let _e124 = near;
-                child = _e124;
+                let _e119 = near;
+                child = _e119;
                 continue;
             }
-            let _e126 = F32_INF;
-            if (tl < bitcast<f32>(_e126)) {
+            let _e121 = F32_INF;
+            if (tl < bitcast<f32>(_e121)) {
                 child = n_6.a;
                 continue;
             }
-            let _e131 = F32_INF;
-            if (tr < bitcast<f32>(_e131)) {
+            let _e126 = F32_INF;
+            if (tr < bitcast<f32>(_e126)) {
                 child = n_6.b;
                 continue;
             }
         }
-        let _e136 = sp_1;
-        let _e137 = pop(TLAS_STACK, _e136);
-        if (_e137.x == NO_HIT) {
+        let _e131 = sp_1;
+        let _e132 = pop(TLAS_STACK, _e131);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    let _e143 = best;
-    return _e143;
+    let _e138 = best;
+    return _e138;
 }
 
-fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_7 = instances[slot_3];
-    let _e7 = to_object(inst_7, ray_8);
+    let _e7 = to_object(inst_7, ray_9);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -897,43 +902,26 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_9: Ray;
+    var ray_10: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_9 = _e7;
-    ray_9.depth = 0u;
-    ray_9.kind = RAY_CAMERA;
-    let _e15 = ray_9.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    let _e15 = ray_10.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_9.medium = _e17;
-    let _e18 = ray_9;
+    ray_10.medium = _e17;
+    let _e18 = ray_10;
     return _e18;
 }
 
-fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
-    let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_7 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_7 * tiny), (abs(d) < tiny));
-    return (vec3(1f) / dd);
+fn node_frame_bounds() -> vec3<f32> {
+    return vec3(65535f);
 }
 
-fn slab(lo_1: vec3<f32>, hi_1: vec3<f32>, origin_3: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_4: f32) -> f32 {
-    let t0_1 = ((lo_1 - origin_3) * inv_dir);
-    let t1_1 = ((hi_1 - origin_3) * inv_dir);
-    let near_3 = min(t0_1, t1_1);
-    let far_3 = max(t0_1, t1_1);
-    let enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    let exit_1 = min((min(far_3.x, far_3.y) * 1.0000005f), min((far_3.z * 1.0000005f), tmax_4));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    let _e30 = F32_INF;
-    return bitcast<f32>(_e30);
-}
-
-fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -942,106 +930,102 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_10.tmax);
+    let _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_10.dir);
     let base_2 = frame_3.tlas_root;
-    let header_2 = nodes[base_2];
-    let origin_4 = header_2.min;
-    let scale_2 = header_2.max;
-    let _e23 = node_frame_hi(header_2);
-    let _e27 = best_2.t;
-    let _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
-    let _e30 = F32_INF;
-    if (_e28 == bitcast<f32>(_e30)) {
-        let _e33 = best_2;
-        return _e33;
+    let header_3 = nodes[base_2];
+    let _e19 = header_box_ray(header_3, ray_11);
+    let _e22 = node_frame_bounds();
+    let _e24 = best_2.t;
+    let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
+    let _e29 = F32_INF;
+    if (_e27 == bitcast<f32>(_e29)) {
+        let _e32 = best_2;
+        return _e32;
     }
-    let _e34 = node_frame_hi(header_2);
-    let _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_10);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     loop {
-        let _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            let _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                let _e55 = child_1;
-                let _e58 = best_2;
-                let _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_10, _e58, shadow_2);
-                best_2 = _e59;
-                let _e61 = best_2.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    let _e65 = best_2;
-                    return _e65;
+        let _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            let _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e51 = child_1;
+                let _e54 = best_2;
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                best_2 = _e55;
+                let _e57 = best_2.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    let _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            let _e66 = child_1;
-            let n_7 = nodes[(base_2 + _e66)];
-            let _e72 = best_2.t;
-            let _e73 = children_entry(n_7, _e36, _e72);
-            let tl_1 = _e73.x;
-            let tr_1 = _e73.y;
+            let _e62 = child_1;
+            let n_7 = nodes[(base_2 + _e62)];
+            let _e68 = best_2.t;
+            let _e69 = children_entry(n_7, _e19, _e68);
+            let tl_1 = _e69.x;
+            let tr_1 = _e69.y;
+            let _e73 = F32_INF;
             let _e77 = F32_INF;
-            let _e81 = F32_INF;
-            if ((tl_1 < bitcast<f32>(_e77)) && (tr_1 < bitcast<f32>(_e81))) {
+            if ((tl_1 < bitcast<f32>(_e73)) && (tr_1 < bitcast<f32>(_e77))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                let _e92 = sp_2;
-                if (_e92 < TLAS_STACK) {
-                    let _e95 = sp_2;
-                    let _e96 = far_1;
-                    traversal_stack[min(_e95, 73u)] = _e96;
-                    let _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                let _e88 = sp_2;
+                if (_e88 < TLAS_STACK) {
+                    let _e91 = sp_2;
+                    let _e92 = far_1;
+                    traversal_stack[min(_e91, 73u)] = _e92;
+                    let _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                let _e104 = near_1;
-                child_1 = _e104;
+                let _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            let _e106 = F32_INF;
-            if (tl_1 < bitcast<f32>(_e106)) {
+            let _e102 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e102)) {
                 child_1 = n_7.a;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (tr_1 < bitcast<f32>(_e111)) {
+            let _e107 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e107)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        let _e116 = sp_2;
-        let _e117 = pop(0u, _e116);
-        if (_e117.x == NO_HIT) {
+        let _e112 = sp_2;
+        let _e113 = pop(0u, _e112);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    let _e123 = best_2;
-    return _e123;
+    let _e119 = best_2;
+    return _e119;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_11: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_12: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_12: Ray) -> vec3<f32> {
+fn miss(ray_13: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1050,7 +1034,7 @@ fn shading_medium(medium: u32) {
     return;
 }
 
-fn fog_shade(m_1: Fog, ray_13: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn fog_shade(m_1: Fog, ray_14: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -1061,8 +1045,8 @@ fn load_Lambert(offset_5: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_14: Ray, hit_4: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
+fn shading_normal(ray_15: Ray, hit_4: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
     return faceForward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1105,15 +1089,15 @@ fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
 }
 
 fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_6 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_11 = (n_3 * vec3(d_6));
+    let d_5 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    let offset_11 = (n_3 * vec3(d_5));
     let _e17 = step_toward((p_5 + offset_11), offset_11);
     return _e17;
 }
 
 fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
-    var tmax_5: f32;
+    var tmax_4: f32;
 
     n_4 = normal_1;
     let _e5 = n_4;
@@ -1127,20 +1111,20 @@ fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: 
     let _e22 = n_4;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
-    tmax_5 = bitcast<f32>(_e25);
+    tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
         let light_1 = (position + (dir_1 * vec3(dist)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light_1 - _e23), dir_1) / dd_1);
+        let dd = dot(dir_1, dir_1);
+        let along_1 = (dot((light_1 - _e23), dir_1) / dd);
         let l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
-        tmax_5 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd)));
     }
-    let _e59 = tmax_5;
+    let _e59 = tmax_4;
     return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_transmittance(ray_15: Ray, medium_1: u32) -> f32 {
+fn shadow_transmittance(ray_16: Ray, medium_1: u32) -> f32 {
     var depth: f32;
 
     scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
@@ -1151,15 +1135,15 @@ fn shadow_transmittance(ray_15: Ray, medium_1: u32) -> f32 {
         if (medium_1 != 0u) {
             let inst_8 = instances[(medium_1 - 1u)];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                let start_1 = Hit(ray_15.origin, 0f, -(ray_15.dir), -(ray_15.dir), vec2(0f), true, inst_8.object, 0u);
+                let start_1 = Hit(ray_16.origin, 0f, -(ray_16.dir), -(ray_16.dir), vec2(0f), true, inst_8.object, 0u);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1);
+                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_16, start_1);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    let _e75 = intersect_scene(ray_15, true);
+    let _e75 = intersect_scene(ray_16, true);
     if (_e75.slot != NO_HIT) {
         return 0f;
     }
@@ -1170,11 +1154,11 @@ fn shadow_transmittance(ray_15: Ray, medium_1: u32) -> f32 {
     let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
         let _e107 = F32_INF;
-        if (ray_15.tmax == bitcast<f32>(_e107)) {
+        if (ray_16.tmax == bitcast<f32>(_e107)) {
             return 0f;
         }
         let _e111 = depth;
-        depth = (_e111 + (net_1 * (ray_15.tmax * length(ray_15.dir))));
+        depth = (_e111 + (net_1 * (ray_16.tmax * length(ray_16.dir))));
     }
     let _e118 = depth;
     return exp(-(max(_e118, 0f)));
@@ -1225,11 +1209,11 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn lambert_shade(m_2: Lambert, ray_16: Ray, hit_5: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_16, hit_5);
+    let _e3 = shading_normal(ray_17, hit_5);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_3 = 0u;
@@ -1251,16 +1235,16 @@ fn lambert_shade(m_2: Lambert, ray_16: Ray, hit_5: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_17: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_18: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_Fog(offset_8);
-            let _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
+            let _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_8);
-            let _e8 = lambert_shade(_e7, ray_17, hit_6);
+            let _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         default: {
@@ -1269,11 +1253,11 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_17: Ray, hit_6: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_18: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_18, c_2);
-    shading_medium(ray_18.medium);
-    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_19, c_2);
+    shading_medium(ray_19.medium);
+    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0f));
     return _e12;
 }
 
@@ -1284,11 +1268,11 @@ fn sample_light_unoccluded_query(i_4: u32, position_5: vec3<f32>, normal_6: vec3
     return _e9;
 }
 
-fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
+fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d: f32, trans: f32) -> vec3<f32> {
     var s_1: f32;
 
     let sigma_1 = m_3.density;
-    let tiny_1 = ((sigma_1 * d_1) < 0.001f);
+    let tiny = ((sigma_1 * d) < 0.001f);
     let _e12 = sample_light_unoccluded_query(i_5, o, vec3(0f));
     let c_7 = (_e12.dir * vec3(_e12.dist));
     let delta = dot(c_7, dir_3);
@@ -1297,21 +1281,21 @@ fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d_1: f32, t
     let equi = (_e22 && (h_1 > 0.00000000000000000001f));
     let ta = atan2(-(delta), h_1);
     let _e34 = F32_INF;
-    let tb = select(atan2((d_1 - delta), h_1), (0.5f * PI), (d_1 == bitcast<f32>(_e34)));
+    let tb = select(atan2((d - delta), h_1), (0.5f * PI), (d == bitcast<f32>(_e34)));
     let w_3 = select(0f, 0.5f, equi);
     let _e41 = rand2_next();
     s_1 = (-(log((1f - (_e41.y * (1f - trans))))) / sigma_1);
-    if tiny_1 {
-        s_1 = (_e41.y * d_1);
+    if tiny {
+        s_1 = (_e41.y * d);
     }
     if (_e41.x < w_3) {
         s_1 = (delta + (h_1 * tan(mix(ta, tb, _e41.y))));
     }
     let _e61 = s_1;
-    s_1 = min(max(_e61, 0f), d_1);
+    s_1 = min(max(_e61, 0f), d);
     let _e66 = s_1;
     let e_4 = exp((-(sigma_1) * _e66));
-    let p_free = select(((sigma_1 * e_4) / (1f - trans)), (1f / d_1), tiny_1);
+    let p_free = select(((sigma_1 * e_4) / (1f - trans)), (1f / d), tiny);
     let _e76 = s_1;
     let r_3 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))), equi));
@@ -1320,16 +1304,16 @@ fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d_1: f32, t
     return (_e97.radiance * vec3(((sigma_1 * e_4) / pdf)));
 }
 
-fn fog_medium(m_4: Fog, ray_19: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_4: Fog, ray_20: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
     var i_6: u32;
 
-    let len = length(ray_19.dir);
+    let len = length(ray_20.dir);
     if (!((m_4.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
-    let d_7 = (t * len);
-    let trans_1 = exp((-(m_4.density) * d_7));
+    let d_6 = (t * len);
+    let trans_1 = exp((-(m_4.density) * d_6));
     light = vec3(0f);
     let _e23 = light_count_query();
     i_6 = 0u;
@@ -1340,7 +1324,7 @@ fn fog_medium(m_4: Fog, ray_19: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
         }
         let _e27 = light;
         let _e28 = i_6;
-        let _e33 = fog_inscatter(m_4, _e28, ray_19.origin, (ray_19.dir / vec3(len)), d_7, trans_1);
+        let _e33 = fog_inscatter(m_4, _e28, ray_20.origin, (ray_20.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
         continuing {
             let _e35 = i_6;
@@ -1351,25 +1335,25 @@ fn fog_medium(m_4: Fog, ray_19: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_20: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_21: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     let _e4 = load_Fog(offset_9);
-    let _e5 = fog_medium(_e4, ray_20, t_1, radiance_1);
+    let _e5 = fog_medium(_e4, ray_21, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_21: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_22: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
-    if (ray_21.medium == 0u) {
+    if (ray_22.medium == 0u) {
         return radiance_2;
     }
-    let inst_10 = instances[(ray_21.medium - 1u)];
+    let inst_10 = instances[(ray_22.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    shading_medium(ray_21.medium);
-    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2);
+    shading_medium(ray_22.medium);
+    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_22, t_2, radiance_2);
     return _e22;
 }
 
@@ -1382,14 +1366,14 @@ fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn fog_rays(m_5: Fog, ray_22: Ray, hit_7: Hit) {
-    rt_spawn(ray_22.dir, vec3(1f));
+fn fog_rays(m_5: Fog, ray_23: Ray, hit_7: Hit) {
+    rt_spawn(ray_23.dir, vec3(1f));
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_23: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_24: Ray, hit_8: Hit) {
     let _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_23, hit_8);
+    fog_rays(_e3, ray_24, hit_8);
     return;
 }
 
@@ -1417,7 +1401,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_3: f32;
     var stack: array<Frame, 3>;
     var depth_1: u32;
-    var ray_24: Ray;
+    var ray_25: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1458,7 +1442,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 3>();
     depth_1 = 0u;
-    ray_24 = camera_ray;
+    ray_25 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1474,10 +1458,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_24;
+            let _e67 = ray_25;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_24;
+            let _e70 = ray_25;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1652,7 +1636,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e372 = spawn_origin(hit_13, _e371, dir_8);
             let _e375 = F32_INF;
             let _e381 = medium_2;
-            ray_24 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_25 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             let _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;

@@ -400,19 +400,19 @@ float rand_next()
 {
     uint x_2 = (uint)0;
 
-    uint d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    uint d = rng_state;
+    rng_state = (d + 1u);
     uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)];
-    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    const uint _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_3 = reversebits(_e24);
     x_2 = i_3;
-    if (((d_1 & 1u) != 0u)) {
+    if (((d & 1u) != 0u)) {
         const uint _e31 = sobol_second_reversed(i_3);
         x_2 = _e31;
     }
-    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     uint _e45 = x_2;
     const uint _e46 = laine_karras(_e45, scramble);
     return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
@@ -463,16 +463,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_22 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_22;
+    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_23;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_23 = _e4;
-    return ray_23;
+    const Ray ray_24 = _e4;
+    return ray_24;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -497,12 +497,12 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_2 = float4(ray.dir, 0.0);
+    float4 d_1 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_24 = _e25;
-    return ray_24;
+    const Ray ray_25 = _e25;
+    return ray_25;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -518,19 +518,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_3);
+    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_2);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -559,16 +559,24 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
 {
     float m_4 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_4) >> 23u) & 255u), 1u), 253u);
-    float3 d_4 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
+    float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
     float unit = asfloat((e << 23u));
     float3 floor_ = (9.094947e-13).xxx;
-    float3 s_3 = ((d_4 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 inv = ((1.0).xxx / ((abs(d_4) < floor_) ? (s_3 * floor_) : d_4));
+    float3 s_3 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_3 * floor_) : d_3));
     float3 rel = (origin_1 - ray_2.origin);
     float3 start = (rel * inv);
     float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
     const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
+}
+
+BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
+{
+    const float3 _e4 = node_frame_hi(header_1);
+    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
+    const BoxRay boxray_1 = _e7;
+    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -605,7 +613,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_10 ? float3(t_4, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
 {
     return true;
 }
@@ -672,7 +680,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -682,23 +690,22 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_1 = inst_2.blas_root;
-    GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    const float3 _e14 = node_frame_hi(header_1);
-    const BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
+    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
+    const BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
-            uint _e27 = child;
-            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e34 = child;
-            uint first = (_e34 & NODE_FIRST_MASK);
+        uint _e17 = child;
+        if (((_e17 & NODE_LEAF_BIT) != 0u)) {
+            uint _e22 = child;
+            uint count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e29 = child;
+            uint first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -706,84 +713,84 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = (_e80 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if ((_e39 >= count_1)) {
+                uint _e34 = k;
+                if ((_e34 >= count_1)) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e43);
-                float _e47 = best.t;
-                const float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                uint _e54 = F32_INF;
-                if ((_e51.x < asfloat(_e54))) {
-                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e63.w);
+                uint _e38 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e38);
+                float _e42 = best.t;
+                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                uint _e49 = F32_INF;
+                if ((_e46.x < asfloat(_e49))) {
+                    float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
-                    const bool _e78 = accept(inst_2, world_ray, c_6);
-                    if (_e78) {
+                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_6);
+                    if (_e73) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            const Candidate candidate_1 = _e79;
+                            Candidate _e74 = best;
+                            const Candidate candidate_1 = _e74;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e83)*32+0)), asuint(nodes.Load((base_1 + _e83)*32+12)), asfloat(nodes.Load3((base_1 + _e83)*32+16)), asuint(nodes.Load((base_1 + _e83)*32+28)));
-            float _e89 = best.t;
-            const float2 _e90 = children_entry(n_6, _e17, _e89);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
+            uint _e78 = child;
+            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e78)*32+0)), asuint(nodes.Load((base_1 + _e78)*32+12)), asfloat(nodes.Load3((base_1 + _e78)*32+16)), asuint(nodes.Load((base_1 + _e78)*32+28)));
+            float _e84 = best.t;
+            const float2 _e85 = children_entry(n_6, _e12, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < asfloat(_e89)) && (tr < asfloat(_e93)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e110 = sp_1;
-                if ((_e110 < BLAS_STACK)) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 65u)), 65u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e109), 65u)), 65u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tl < asfloat(_e126))) {
+            uint _e121 = F32_INF;
+            if ((tl < asfloat(_e121))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if ((tr < asfloat(_e131))) {
+            uint _e126 = F32_INF;
+            if ((tr < asfloat(_e126))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        const uint2 _e137 = pop(TLAS_STACK, _e136);
-        if ((_e137.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        const uint2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    const Candidate candidate_2 = _e143;
+    Candidate _e138 = best;
+    const Candidate candidate_2 = _e138;
     return candidate_2;
 }
 
@@ -806,17 +813,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_6, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_5);
+    const Ray _e7 = to_object(inst_6, ray_6);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -906,16 +913,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_6, Candidate c_1)
+Hit finish_hit(Ray ray_7, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_6.origin, (ray_6.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_7.origin, (ray_7.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_7.origin + (ray_7.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -959,7 +966,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_7.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_11 = _e151;
     return hit_11;
@@ -1019,46 +1026,28 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_7 = (Ray)0;
+    Ray ray_8 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_7 = _e7;
-    ray_7.depth = 0u;
-    ray_7.kind = RAY_CAMERA;
-    float3 _e15 = ray_7.origin;
+    ray_8 = _e7;
+    ray_8.depth = 0u;
+    ray_8.kind = RAY_CAMERA;
+    float3 _e15 = ray_8.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_7.medium = _e17;
-    Ray _e18 = ray_7;
-    const Ray ray_25 = _e18;
-    return ray_25;
+    ray_8.medium = _e17;
+    Ray _e18 = ray_8;
+    const Ray ray_26 = _e18;
+    return ray_26;
 }
 
-float3 safe_inverse(float3 d)
+float3 node_frame_bounds()
 {
-    float3 tiny = (1.1754944e-38).xxx;
-    float3 s_5 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_5 * tiny) : d);
-    return ((1.0).xxx / dd);
+    return (65535.0).xxx;
 }
 
-float slab(float3 lo_1, float3 hi_1, float3 origin_3, float3 inv_dir, float tmin_1, float tmax_4)
-{
-    float3 t0_1 = ((lo_1 - origin_3) * inv_dir);
-    float3 t1_1 = ((hi_1 - origin_3) * inv_dir);
-    float3 near_3 = min(t0_1, t1_1);
-    float3 far_3 = max(t0_1, t1_1);
-    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
-    if ((enter_1 <= exit_1)) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return asfloat(_e30);
-}
-
-Candidate intersect_scene(Ray ray_8, bool shadow_2)
+Candidate intersect_scene(Ray ray_9, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1068,7 +1057,7 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_8.tmax);
+    const Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1076,92 +1065,88 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_8.dir);
     uint base_2 = frame_3.tlas_root;
-    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    float3 origin_4 = header_2.min_;
-    float3 scale_2 = header_2.max_;
-    const float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    const float _e28 = slab(origin_4, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
-    uint _e30 = F32_INF;
-    if ((_e28 == asfloat(_e30))) {
-        Candidate _e33 = best_2;
-        const Candidate candidate_6 = _e33;
+    GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
+    const BoxRay _e19 = header_box_ray(header_3, ray_9);
+    const float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
+    uint _e29 = F32_INF;
+    if ((_e27 == asfloat(_e29))) {
+        Candidate _e32 = best_2;
+        const Candidate candidate_6 = _e32;
         return candidate_6;
     }
-    const float3 _e34 = node_frame_hi(header_2);
-    const BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_8);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
-            uint _e46 = child_1;
-            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                const Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_8, _e58, shadow_2);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if ((shadow_2 && (_e61 != NO_HIT))) {
-                    Candidate _e65 = best_2;
-                    const Candidate candidate_7 = _e65;
+        uint _e37 = child_1;
+        if (((_e37 & NODE_LEAF_BIT) != 0u)) {
+            uint _e42 = child_1;
+            if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if ((shadow_2 && (_e57 != NO_HIT))) {
+                    Candidate _e61 = best_2;
+                    const Candidate candidate_7 = _e61;
                     return candidate_7;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e66)*32+0)), asuint(nodes.Load((base_2 + _e66)*32+12)), asfloat(nodes.Load3((base_2 + _e66)*32+16)), asuint(nodes.Load((base_2 + _e66)*32+28)));
-            float _e72 = best_2.t;
-            const float2 _e73 = children_entry(n_7, _e36, _e72);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e62)*32+0)), asuint(nodes.Load((base_2 + _e62)*32+12)), asfloat(nodes.Load3((base_2 + _e62)*32+16)), asuint(nodes.Load((base_2 + _e62)*32+28)));
+            float _e68 = best_2.t;
+            const float2 _e69 = children_entry(n_7, _e19, _e68);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if (((tl_1 < asfloat(_e77)) && (tr_1 < asfloat(_e81)))) {
+            if (((tl_1 < asfloat(_e73)) && (tr_1 < asfloat(_e77)))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e92 = sp_2;
-                if ((_e92 < TLAS_STACK)) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack[min(uint(min(_e95, 65u)), 65u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                uint _e88 = sp_2;
+                if ((_e88 < TLAS_STACK)) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack[min(uint(min(_e91, 65u)), 65u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if ((tl_1 < asfloat(_e106))) {
+            uint _e102 = F32_INF;
+            if ((tl_1 < asfloat(_e102))) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((tr_1 < asfloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((tr_1 < asfloat(_e107))) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        const uint2 _e117 = pop(0u, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e112 = sp_2;
+        const uint2 _e113 = pop(0u, _e112);
+        if ((_e113.x == NO_HIT)) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    const Candidate candidate_8 = _e123;
+    Candidate _e119 = best_2;
+    const Candidate candidate_8 = _e119;
     return candidate_8;
 }
 
@@ -1188,9 +1173,9 @@ SkyGradient load_SkyGradient(uint offset_2)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_6, Ray ray_9)
+float3 sky_gradient(SkyGradient b_6, Ray ray_10)
 {
-    const float3 _e3 = normalize_vec3f(ray_9.dir);
+    const float3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_6.horizon, b_6.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1198,20 +1183,20 @@ float3 sky_gradient(SkyGradient b_6, Ray ray_9)
     return lerp(b_6.horizon, b_6.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_10)
+float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_11)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_3);
-    const float3 _e3 = sky_gradient(_e2, ray_10);
+    const float3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
-float3 miss(Ray ray_11)
+float3 miss(Ray ray_12)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1232,7 +1217,7 @@ Glass load_Glass(uint offset_4)
     return glass;
 }
 
-float3 glass_shade(Glass m, Ray ray_12, Hit hit_1, float3 secondary)
+float3 glass_shade(Glass m, Ray ray_13, Hit hit_1, float3 secondary)
 {
     return secondary;
 }
@@ -1252,7 +1237,7 @@ Mirror load_Mirror(uint offset_5)
     return mirror;
 }
 
-float3 mirror_shade(Mirror m_1, Ray ray_13, Hit hit_2, float3 secondary_1)
+float3 mirror_shade(Mirror m_1, Ray ray_14, Hit hit_2, float3 secondary_1)
 {
     return secondary_1;
 }
@@ -1261,17 +1246,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_14, Hit hit_3, float3 secondary_2)
+float3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_15, Hit hit_3, float3 secondary_2)
 {
     switch(type_id_2) {
         case 0u: {
             const Glass _e5 = load_Glass(offset_6);
-            const float3 _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
+            const float3 _e6 = glass_shade(_e5, ray_15, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
             const Mirror _e7 = load_Mirror(offset_6);
-            const float3 _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
+            const float3 _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -1281,32 +1266,32 @@ float3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_14, Hit hit_3
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_15, Candidate c_2)
+float3 shade_direct(Ray ray_16, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_15, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_16, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t, float3 radiance)
+float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_17, float t, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_17, float t_1, float3 radiance_1)
+float3 through_medium(Ray ray_18, float t_1, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_17.medium == 0u)) {
+    if ((ray_18.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_17.medium - 1u)*128+0)), asfloat(instances.Load4((ray_17.medium - 1u)*128+16)), asfloat(instances.Load4((ray_17.medium - 1u)*128+32)), asfloat(instances.Load4((ray_17.medium - 1u)*128+48)), asfloat(instances.Load4((ray_17.medium - 1u)*128+64)), asfloat(instances.Load4((ray_17.medium - 1u)*128+80)), asuint(instances.Load((ray_17.medium - 1u)*128+96)), asuint(instances.Load((ray_17.medium - 1u)*128+100)), asuint(instances.Load((ray_17.medium - 1u)*128+104)), asuint(instances.Load((ray_17.medium - 1u)*128+108)), asuint(instances.Load((ray_17.medium - 1u)*128+112)), asuint(instances.Load((ray_17.medium - 1u)*128+116)), asuint(instances.Load((ray_17.medium - 1u)*128+120)), asuint(instances.Load((ray_17.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_18.medium - 1u)*128+0)), asfloat(instances.Load4((ray_18.medium - 1u)*128+16)), asfloat(instances.Load4((ray_18.medium - 1u)*128+32)), asfloat(instances.Load4((ray_18.medium - 1u)*128+48)), asfloat(instances.Load4((ray_18.medium - 1u)*128+64)), asfloat(instances.Load4((ray_18.medium - 1u)*128+80)), asuint(instances.Load((ray_18.medium - 1u)*128+96)), asuint(instances.Load((ray_18.medium - 1u)*128+100)), asuint(instances.Load((ray_18.medium - 1u)*128+104)), asuint(instances.Load((ray_18.medium - 1u)*128+108)), asuint(instances.Load((ray_18.medium - 1u)*128+112)), asuint(instances.Load((ray_18.medium - 1u)*128+116)), asuint(instances.Load((ray_18.medium - 1u)*128+120)), asuint(instances.Load((ray_18.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_18, t_1, radiance_1);
     return _e21;
 }
 
@@ -1333,12 +1318,12 @@ void rt_spawn(float3 dir, float3 weight)
     }
 }
 
-void glass_rays(Glass m_2, Ray ray_18, Hit hit_4)
+void glass_rays(Glass m_2, Ray ray_19, Hit hit_4)
 {
     float3 n_3 = (float3)0;
     float eta_1 = (float)0;
 
-    const float3 _e4 = normalize_vec3f(ray_18.dir);
+    const float3 _e4 = normalize_vec3f(ray_19.dir);
     n_3 = hit_4.normal;
     eta_1 = (1.0 / m_2.ior);
     if (!(hit_4.front_face)) {
@@ -1364,24 +1349,24 @@ void glass_rays(Glass m_2, Ray ray_18, Hit hit_4)
     return;
 }
 
-void mirror_rays(Mirror m_3, Ray ray_19, Hit hit_5)
+void mirror_rays(Mirror m_3, Ray ray_20, Hit hit_5)
 {
-    const float3 _e4 = normalize_vec3f(ray_19.dir);
+    const float3 _e4 = normalize_vec3f(ray_20.dir);
     rt_spawn(reflect(_e4, hit_5.normal), m_3.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_4, uint offset_8, Ray ray_20, Hit hit_6)
+void dispatch_secondary_rays(uint type_id_4, uint offset_8, Ray ray_21, Hit hit_6)
 {
     switch(type_id_4) {
         case 0u: {
             const Glass _e4 = load_Glass(offset_8);
-            glass_rays(_e4, ray_20, hit_6);
+            glass_rays(_e4, ray_21, hit_6);
             return;
         }
         case 1u: {
             const Mirror _e5 = load_Mirror(offset_8);
-            mirror_rays(_e5, ray_20, hit_6);
+            mirror_rays(_e5, ray_21, hit_6);
             return;
         }
         default: {
@@ -1403,8 +1388,8 @@ float3 step_toward(float3 x_3, float3 s)
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_9 = (n_4 * (d_5).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_9 = (n_4 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_9), offset_9);
     return _e17;
 }
@@ -1460,7 +1445,7 @@ float3 trace(Ray camera_ray)
     float t_2 = (float)0;
     Frame stack[6] = (Frame[6])0;
     uint depth = (uint)0;
-    Ray ray_21 = (Ray)0;
+    Ray ray_22 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1499,7 +1484,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray6_Frame_();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1518,10 +1503,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_21;
+            Ray _e67 = ray_22;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_21;
+            Ray _e70 = ray_22;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1658,7 +1643,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_12, _e283, dir_3);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_21 = ConstructRay(_e284, 0.0, dir_3, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_22 = ConstructRay(_e284, 0.0, dir_3, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
             s_ray = _e299;

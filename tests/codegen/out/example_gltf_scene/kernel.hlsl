@@ -461,19 +461,19 @@ float rand_next()
 {
     uint x_2 = (uint)0;
 
-    uint d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    uint d = rng_state;
+    rng_state = (d + 1u);
     uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 24u)), 24u)];
-    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    const uint _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_7 = reversebits(_e24);
     x_2 = i_7;
-    if (((d_1 & 1u) != 0u)) {
+    if (((d & 1u) != 0u)) {
         const uint _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     uint _e45 = x_2;
     const uint _e46 = laine_karras(_e45, scramble);
     return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
@@ -524,16 +524,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_28 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_28;
+    const Ray ray_29 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_29;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_29 = _e4;
-    return ray_29;
+    const Ray ray_30 = _e4;
+    return ray_30;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -558,12 +558,12 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_2 = float4(ray.dir, 0.0);
+    float4 d_1 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_30 = _e25;
-    return ray_30;
+    const Ray ray_31 = _e25;
+    return ray_31;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -579,19 +579,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_3);
+    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_2);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -620,16 +620,24 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
 {
     float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_3) >> 23u) & 255u), 1u), 253u);
-    float3 d_4 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
+    float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
     float unit = asfloat((e << 23u));
     float3 floor_ = (9.094947e-13).xxx;
-    float3 s_3 = ((d_4 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 inv = ((1.0).xxx / ((abs(d_4) < floor_) ? (s_3 * floor_) : d_4));
+    float3 s_3 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_3 * floor_) : d_3));
     float3 rel = (origin_1 - ray_2.origin);
     float3 start = (rel * inv);
     float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
     const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
+}
+
+BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
+{
+    const float3 _e4 = node_frame_hi(header_1);
+    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
+    const BoxRay boxray_1 = _e7;
+    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -690,16 +698,16 @@ float3 normal_to_world(GpuInstance inst_1, float3 n)
     return _e19;
 }
 
-bool single_sided_seen_front(Ray ray_3, bool front_face)
+bool single_sided_seen_front(Ray ray_4, bool front_face)
 {
-    return (front_face != (ray_3.kind == RAY_SHADOW));
+    return (front_face != (ray_4.kind == RAY_SHADOW));
 }
 
-bool culled(GpuInstance inst_2, Ray ray_4, Candidate c)
+bool culled(GpuInstance inst_2, Ray ray_5, Candidate c)
 {
     const Triangle _e4 = load_triangle(c.primitive);
     const float3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    const bool _e17 = single_sided_seen_front(ray_4, (dot(ray_4.dir, _e12) < 0.0));
+    const bool _e17 = single_sided_seen_front(ray_5, (dot(ray_5.dir, _e12) < 0.0));
     return !(_e17);
 }
 
@@ -780,16 +788,16 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Hit finish_hit(Ray ray_5, Candidate c_1)
+Hit finish_hit(Ray ray_6, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_5.origin, (ray_5.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_6.origin, (ray_6.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_5.origin + (ray_5.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -833,7 +841,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_5.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_15 = _e151;
     return hit_15;
@@ -956,11 +964,11 @@ float4 sample_texture(uint t_1, float2 uv)
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
     int wi = int(max(_e6, 1u));
     uint _e14 = asuint(params.Load((t_1 + 2u)*4));
-    int hi_2 = int(max(_e14, 1u));
+    int hi_1 = int(max(_e14, 1u));
     uint sampler_ = asuint(params.Load((t_1 + 4u)*4));
     uint mu = (sampler_ & TEXTURE_WRAP_MASK);
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    float2 q_3 = (uv * float2(float(wi), float(hi_2)));
+    float2 q_3 = (uv * float2(float(wi), float(hi_1)));
     float2 p_8 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
     float2 f_2 = floor(p_8);
     float2 fr = (p_8 - f_2);
@@ -968,7 +976,7 @@ float4 sample_texture(uint t_1, float2 uv)
     const int _e49 = i32_from_f32_(f_2.y);
     const int2 _e50 = wrap_texel_pair(_e47, wi, mu);
     uint2 xs = uint2(_e50);
-    const int2 _e52 = wrap_texel_pair(_e49, hi_2, mv);
+    const int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
     uint2 ys = uint2(_e52);
     uint x0_ = xs.x;
     uint x1_ = xs.y;
@@ -998,15 +1006,15 @@ uint gltf_pcg(uint x_5)
     return ((word_1 >> 22u) ^ word_1);
 }
 
-float gltf_coverage(Ray ray_6, Hit hit_1)
+float gltf_coverage(Ray ray_7, Hit hit_1)
 {
     uint h = (uint)0;
 
-    uint3 o_1 = asuint(ray_6.origin);
-    uint3 d_5 = asuint(ray_6.dir);
-    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_5.x * 3266489909u));
+    uint3 o_1 = asuint(ray_7.origin);
+    uint3 d_4 = asuint(ray_7.dir);
+    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
     uint _e20 = h;
-    h = (((_e20 ^ (d_5.y * 668265263u)) ^ (d_5.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
     uint _e33 = h;
     const uint _e38 = frame_index_query();
     h = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
@@ -1018,41 +1026,41 @@ float gltf_coverage(Ray ray_6, Hit hit_1)
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_7, Hit hit_2)
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_8, Hit hit_2)
 {
-    if (((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW)))) {
+    if (((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW)))) {
         return false;
     }
     if ((blend != 0u)) {
-        const float _e17 = gltf_coverage(ray_7, hit_2);
+        const float _e17 = gltf_coverage(ray_8, hit_2);
         return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_8, Hit hit_3)
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_9, Hit hit_3)
 {
     const float4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3);
+    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_9, Hit hit_4)
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_10, Hit hit_4)
 {
     const GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    const bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4);
+    const bool _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_5, Ray ray_10, Candidate c_3)
+bool accept(GpuInstance inst_5, Ray ray_11, Candidate c_3)
 {
     bool short_circuit = (bool)0;
 
     bool _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
     short_circuit = _e7;
     if (_e7) {
-        const bool _e9 = culled(inst_5, ray_10, c_3);
+        const bool _e9 = culled(inst_5, ray_11, c_3);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -1061,9 +1069,9 @@ bool accept(GpuInstance inst_5, Ray ray_10, Candidate c_3)
     }
     if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        const Hit _e19 = finish_hit(ray_10, c_3);
+        const Hit _e19 = finish_hit(ray_11, c_3);
         hit_error = shaded;
-        const bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19);
+        const bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19);
         return _e23;
     }
     return true;
@@ -1131,7 +1139,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_11, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_12, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -1141,23 +1149,22 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_11);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_12);
     uint base_2 = inst_6.blas_root;
-    GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    const float3 _e14 = node_frame_hi(header_1);
-    const BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_11);
+    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
+    const BoxRay _e12 = header_box_ray(header_2, ray_12);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
-            uint _e27 = child;
-            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e34 = child;
-            uint first = (_e34 & NODE_FIRST_MASK);
+        uint _e17 = child;
+        if (((_e17 & NODE_LEAF_BIT) != 0u)) {
+            uint _e22 = child;
+            uint count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e29 = child;
+            uint first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -1165,98 +1172,98 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = (_e80 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if ((_e39 >= count_1)) {
+                uint _e34 = k;
+                if ((_e34 >= count_1)) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = ((inst_6.triangle_offset + first) + _e43);
-                float _e47 = best.t;
-                const float3 _e51 = hit_triangle(_e7, prim, ray_11.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                uint _e54 = F32_INF;
-                if ((_e51.x < asfloat(_e54))) {
-                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e63.w);
+                uint _e38 = k;
+                uint prim = ((inst_6.triangle_offset + first) + _e38);
+                float _e42 = best.t;
+                const float3 _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                uint _e49 = F32_INF;
+                if ((_e46.x < asfloat(_e49))) {
+                    float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_6.object + tag) - 1u) : slot_2);
-                    Candidate c_11 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
-                    const bool _e78 = accept(inst_6, world_ray, c_11);
-                    if (_e78) {
+                    Candidate c_11 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_6, world_ray, c_11);
+                    if (_e73) {
                         best = c_11;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            const Candidate candidate_1 = _e79;
+                            Candidate _e74 = best;
+                            const Candidate candidate_1 = _e74;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e83)*32+0)), asuint(nodes.Load((base_2 + _e83)*32+12)), asfloat(nodes.Load3((base_2 + _e83)*32+16)), asuint(nodes.Load((base_2 + _e83)*32+28)));
-            float _e89 = best.t;
-            const float2 _e90 = children_entry(n_7, _e17, _e89);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
+            uint _e78 = child;
+            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e78)*32+0)), asuint(nodes.Load((base_2 + _e78)*32+12)), asfloat(nodes.Load3((base_2 + _e78)*32+16)), asuint(nodes.Load((base_2 + _e78)*32+28)));
+            float _e84 = best.t;
+            const float2 _e85 = children_entry(n_7, _e12, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < asfloat(_e89)) && (tr < asfloat(_e93)))) {
                 near = n_7.a;
                 far = n_7.b;
                 if (((tr < tl) != shadow)) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                uint _e110 = sp_1;
-                if ((_e110 < BLAS_STACK)) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 127u)), 127u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e109), 127u)), 127u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tl < asfloat(_e126))) {
+            uint _e121 = F32_INF;
+            if ((tl < asfloat(_e121))) {
                 child = n_7.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if ((tr < asfloat(_e131))) {
+            uint _e126 = F32_INF;
+            if ((tr < asfloat(_e126))) {
                 child = n_7.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        const uint2 _e137 = pop(TLAS_STACK, _e136);
-        if ((_e137.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        const uint2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    const Candidate candidate_2 = _e143;
+    Candidate _e138 = best;
+    const Candidate candidate_2 = _e138;
     return candidate_2;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_3, Ray ray_13, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(slot_3*128+0)), asfloat(instances.Load4(slot_3*128+16)), asfloat(instances.Load4(slot_3*128+32)), asfloat(instances.Load4(slot_3*128+48)), asfloat(instances.Load4(slot_3*128+64)), asfloat(instances.Load4(slot_3*128+80)), asuint(instances.Load(slot_3*128+96)), asuint(instances.Load(slot_3*128+100)), asuint(instances.Load(slot_3*128+104)), asuint(instances.Load(slot_3*128+108)), asuint(instances.Load(slot_3*128+112)), asuint(instances.Load(slot_3*128+116)), asuint(instances.Load(slot_3*128+120)), asuint(instances.Load(slot_3*128+124)));
-    const Ray _e7 = to_object(inst_8, ray_12);
+    const Ray _e7 = to_object(inst_8, ray_13);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_8.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1318,46 +1325,28 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_13 = (Ray)0;
+    Ray ray_14 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_13 = _e7;
-    ray_13.depth = 0u;
-    ray_13.kind = RAY_CAMERA;
-    float3 _e15 = ray_13.origin;
+    ray_14 = _e7;
+    ray_14.depth = 0u;
+    ray_14.kind = RAY_CAMERA;
+    float3 _e15 = ray_14.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_13.medium = _e17;
-    Ray _e18 = ray_13;
-    const Ray ray_31 = _e18;
-    return ray_31;
+    ray_14.medium = _e17;
+    Ray _e18 = ray_14;
+    const Ray ray_32 = _e18;
+    return ray_32;
 }
 
-float3 safe_inverse(float3 d)
+float3 node_frame_bounds()
 {
-    float3 tiny = (1.1754944e-38).xxx;
-    float3 s_5 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_5 * tiny) : d);
-    return ((1.0).xxx / dd);
+    return (65535.0).xxx;
 }
 
-float slab(float3 lo_1, float3 hi_1, float3 origin_3, float3 inv_dir, float tmin_1, float tmax_4)
-{
-    float3 t0_1 = ((lo_1 - origin_3) * inv_dir);
-    float3 t1_1 = ((hi_1 - origin_3) * inv_dir);
-    float3 near_3 = min(t0_1, t1_1);
-    float3 far_3 = max(t0_1, t1_1);
-    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
-    if ((enter_1 <= exit_1)) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return asfloat(_e30);
-}
-
-Candidate intersect_scene(Ray ray_14, bool shadow_2)
+Candidate intersect_scene(Ray ray_15, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1367,7 +1356,7 @@ Candidate intersect_scene(Ray ray_14, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_14.tmax);
+    const Candidate _e7 = no_candidate(ray_15.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1375,92 +1364,88 @@ Candidate intersect_scene(Ray ray_14, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_14.dir);
     uint base_3 = frame_3.tlas_root;
-    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
-    float3 origin_4 = header_2.min_;
-    float3 scale_2 = header_2.max_;
-    const float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    const float _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
-    uint _e30 = F32_INF;
-    if ((_e28 == asfloat(_e30))) {
-        Candidate _e33 = best_2;
-        const Candidate candidate_6 = _e33;
+    GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
+    const BoxRay _e19 = header_box_ray(header_3, ray_15);
+    const float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
+    uint _e29 = F32_INF;
+    if ((_e27 == asfloat(_e29))) {
+        Candidate _e32 = best_2;
+        const Candidate candidate_6 = _e32;
         return candidate_6;
     }
-    const float3 _e34 = node_frame_hi(header_2);
-    const BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_14);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
-            uint _e46 = child_1;
-            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                const Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_14, _e58, shadow_2);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if ((shadow_2 && (_e61 != NO_HIT))) {
-                    Candidate _e65 = best_2;
-                    const Candidate candidate_7 = _e65;
+        uint _e37 = child_1;
+        if (((_e37 & NODE_LEAF_BIT) != 0u)) {
+            uint _e42 = child_1;
+            if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if ((shadow_2 && (_e57 != NO_HIT))) {
+                    Candidate _e61 = best_2;
+                    const Candidate candidate_7 = _e61;
                     return candidate_7;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e66)*32+0)), asuint(nodes.Load((base_3 + _e66)*32+12)), asfloat(nodes.Load3((base_3 + _e66)*32+16)), asuint(nodes.Load((base_3 + _e66)*32+28)));
-            float _e72 = best_2.t;
-            const float2 _e73 = children_entry(n_8, _e36, _e72);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e62)*32+0)), asuint(nodes.Load((base_3 + _e62)*32+12)), asfloat(nodes.Load3((base_3 + _e62)*32+16)), asuint(nodes.Load((base_3 + _e62)*32+28)));
+            float _e68 = best_2.t;
+            const float2 _e69 = children_entry(n_8, _e19, _e68);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if (((tl_1 < asfloat(_e77)) && (tr_1 < asfloat(_e81)))) {
+            if (((tl_1 < asfloat(_e73)) && (tr_1 < asfloat(_e77)))) {
                 near_1 = n_8.a;
                 far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_8.b;
                     far_1 = n_8.a;
                 }
-                uint _e92 = sp_2;
-                if ((_e92 < TLAS_STACK)) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack[min(uint(min(_e95, 127u)), 127u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                uint _e88 = sp_2;
+                if ((_e88 < TLAS_STACK)) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack[min(uint(min(_e91, 127u)), 127u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if ((tl_1 < asfloat(_e106))) {
+            uint _e102 = F32_INF;
+            if ((tl_1 < asfloat(_e102))) {
                 child_1 = n_8.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((tr_1 < asfloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((tr_1 < asfloat(_e107))) {
                 child_1 = n_8.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        const uint2 _e117 = pop(0u, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e112 = sp_2;
+        const uint2 _e113 = pop(0u, _e112);
+        if ((_e113.x == NO_HIT)) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    const Candidate candidate_8 = _e123;
+    Candidate _e119 = best_2;
+    const Candidate candidate_8 = _e119;
     return candidate_8;
 }
 
@@ -1487,9 +1472,9 @@ SkyGradient load_SkyGradient(uint offset_4)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_7, Ray ray_15)
+float3 sky_gradient(SkyGradient b_7, Ray ray_16)
 {
-    const float3 _e3 = normalize_vec3f(ray_15.dir);
+    const float3 _e3 = normalize_vec3f(ray_16.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_7.horizon, b_7.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1497,26 +1482,26 @@ float3 sky_gradient(SkyGradient b_7, Ray ray_15)
     return lerp(b_7.horizon, b_7.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_16)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_17)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_5);
-    const float3 _e3 = sky_gradient(_e2, ray_16);
+    const float3 _e3 = sky_gradient(_e2, ray_17);
     return _e3;
 }
 
-float3 miss(Ray ray_17)
+float3 miss(Ray ray_18)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
     return _e9;
 }
 
-float3 shading_normal(Ray ray_18, Hit hit_5)
+float3 shading_normal(Ray ray_19, Hit hit_5)
 {
-    float3 ng = faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
+    float3 ng = faceforward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1718,8 +1703,8 @@ float3 step_toward(float3 x_6, float3 s)
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_6 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_13 = (n_4 * (d_6).xxx);
+    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_13 = (n_4 * (d_5).xxx);
     const float3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
@@ -1727,7 +1712,7 @@ float3 offset_origin(float3 p_5, float3 n_4, float error)
 Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
 {
     float3 n_5 = (float3)0;
-    float tmax_5 = (float)0;
+    float tmax_4 = (float)0;
 
     n_5 = normal_5;
     float3 _e5 = n_5;
@@ -1741,18 +1726,18 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
     float3 _e22 = n_5;
     const float3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = asfloat(_e25);
+    tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < asfloat(_e29))) {
         float3 light = (position_4 + (dir_2 * (dist_1).xxx));
-        float dd_1 = dot(dir_2, dir_2);
-        float along_1 = (dot((light - _e23), dir_2) / dd_1);
+        float dd = dot(dir_2, dir_2);
+        float along_1 = (dot((light - _e23), dir_2) / dd);
         float3 l_2 = (abs(position_4) + abs((dir_2 * (dist_1).xxx)));
-        tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd)));
     }
-    float _e59 = tmax_5;
-    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_32;
+    float _e59 = tmax_4;
+    const Ray ray_33 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_33;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -1852,8 +1837,8 @@ float3 pbr_fresnel(float3 f0_, float c_4)
 
 float pbr_ggx_d(float ndh, float a2_)
 {
-    float d_7 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_7 * d_7));
+    float d_6 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_6 * d_6));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1)
@@ -1863,13 +1848,13 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion_1, float3 emissive, Ray ray_19, Hit hit_6)
+float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion_1, float3 emissive, Ray ray_20, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_5 = (uint)0;
 
-    const float3 _e7 = shading_normal(ray_19, hit_6);
-    const float3 _e9 = normalize_vec3f(ray_19.dir);
+    const float3 _e7 = shading_normal(ray_20, hit_6);
+    const float3 _e9 = normalize_vec3f(ray_20.dir);
     float3 v_4 = -(_e9);
     float metal = saturate(metallic);
     const float _e12 = pbr_alpha2_(roughness_1);
@@ -1908,11 +1893,11 @@ float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlus
     return _e68;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_20, Hit hit_7)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_21, Hit hit_7)
 {
     const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     float3 c_12 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7);
+    const float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_21, hit_7);
     return _e14;
 }
 
@@ -1942,11 +1927,11 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_21, Hit hit_8)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_22, Hit hit_8)
 {
     const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     float3 c_13 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8);
+    const float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_22, hit_8);
     return _e14;
 }
 
@@ -1954,17 +1939,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_22, Hit hit_9, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_23, Hit hit_9, float3 secondary)
 {
     switch(type_id_4) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_23, hit_9);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            const float3 _e7 = gltf_shade(_e6, ray_22, hit_9);
+            const float3 _e7 = gltf_shade(_e6, ray_23, hit_9);
             return _e7;
         }
         default: {
@@ -1974,36 +1959,36 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_22, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_23, Candidate c_6)
+float3 shade_direct(Ray ray_24, Candidate c_6)
 {
     GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_6.slot*128+0)), asfloat(instances.Load4(c_6.slot*128+16)), asfloat(instances.Load4(c_6.slot*128+32)), asfloat(instances.Load4(c_6.slot*128+48)), asfloat(instances.Load4(c_6.slot*128+64)), asfloat(instances.Load4(c_6.slot*128+80)), asuint(instances.Load(c_6.slot*128+96)), asuint(instances.Load(c_6.slot*128+100)), asuint(instances.Load(c_6.slot*128+104)), asuint(instances.Load(c_6.slot*128+108)), asuint(instances.Load(c_6.slot*128+112)), asuint(instances.Load(c_6.slot*128+116)), asuint(instances.Load(c_6.slot*128+120)), asuint(instances.Load(c_6.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_23, c_6);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_24, c_6);
+    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_24, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_25, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_25, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_26, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_25.medium == 0u)) {
+    if ((ray_26.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_25.medium - 1u)*128+0)), asfloat(instances.Load4((ray_25.medium - 1u)*128+16)), asfloat(instances.Load4((ray_25.medium - 1u)*128+32)), asfloat(instances.Load4((ray_25.medium - 1u)*128+48)), asfloat(instances.Load4((ray_25.medium - 1u)*128+64)), asfloat(instances.Load4((ray_25.medium - 1u)*128+80)), asuint(instances.Load((ray_25.medium - 1u)*128+96)), asuint(instances.Load((ray_25.medium - 1u)*128+100)), asuint(instances.Load((ray_25.medium - 1u)*128+104)), asuint(instances.Load((ray_25.medium - 1u)*128+108)), asuint(instances.Load((ray_25.medium - 1u)*128+112)), asuint(instances.Load((ray_25.medium - 1u)*128+116)), asuint(instances.Load((ray_25.medium - 1u)*128+120)), asuint(instances.Load((ray_25.medium - 1u)*128+124)));
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_26.medium - 1u)*128+0)), asfloat(instances.Load4((ray_26.medium - 1u)*128+16)), asfloat(instances.Load4((ray_26.medium - 1u)*128+32)), asfloat(instances.Load4((ray_26.medium - 1u)*128+48)), asfloat(instances.Load4((ray_26.medium - 1u)*128+64)), asfloat(instances.Load4((ray_26.medium - 1u)*128+80)), asuint(instances.Load((ray_26.medium - 1u)*128+96)), asuint(instances.Load((ray_26.medium - 1u)*128+100)), asuint(instances.Load((ray_26.medium - 1u)*128+104)), asuint(instances.Load((ray_26.medium - 1u)*128+108)), asuint(instances.Load((ray_26.medium - 1u)*128+112)), asuint(instances.Load((ray_26.medium - 1u)*128+116)), asuint(instances.Load((ray_26.medium - 1u)*128+120)), asuint(instances.Load((ray_26.medium - 1u)*128+124)));
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_26, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_27, Hit hit_10)
 {
     return;
 }
@@ -2059,7 +2044,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_27 = (Ray)0;
+    Ray ray_28 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -2098,7 +2083,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_27 = camera_ray;
+    ray_28 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -2117,10 +2102,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_27;
+            Ray _e67 = ray_28;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_27;
+            Ray _e70 = ray_28;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -2257,7 +2242,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_16, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_27 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_28 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

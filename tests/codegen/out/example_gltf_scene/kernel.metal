@@ -449,19 +449,19 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint x_2 = {};
-    uint d_1 = rng_state;
-    rng_state = d_1 + 1u;
+    uint d = rng_state;
+    rng_state = d + 1u;
     uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 24u)];
-    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e16 = pcg_hash(_e10 ^ ((d >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_7 = metal::reverse_bits(_e24);
     x_2 = i_7;
-    if ((d_1 & 1u) != 0u) {
+    if ((d & 1u) != 0u) {
         uint _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
@@ -544,9 +544,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
     return _e25;
 }
@@ -554,19 +554,19 @@ Ray to_object(
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_3);
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_3[metal::min(kz, 2u)];
+    float dz = d_2[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 node_point(
@@ -592,15 +592,24 @@ BoxRay box_ray(
 ) {
     float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
-    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
     float unit = as_type<float>(e << 23u);
     metal::float3 floor = metal::float3(0.0000000000009094947);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
-    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_3 * floor, metal::abs(d_4) < floor);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_3 * floor, metal::abs(d_3) < floor);
     metal::float3 rel = origin_1 - ray_2.origin;
     metal::float3 start = rel * inv;
     metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_3;
     return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
+BoxRay header_box_ray(
+    GpuNode header_1,
+    Ray ray_3
+) {
+    metal::float3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
+    return _e7;
 }
 
 metal::float3 hit_triangle(
@@ -666,22 +675,22 @@ metal::float3 normal_to_world(
 }
 
 bool single_sided_seen_front(
-    Ray ray_3,
+    Ray ray_4,
     bool front_face
 ) {
-    return front_face != (ray_3.kind == RAY_SHADOW);
+    return front_face != (ray_4.kind == RAY_SHADOW);
 }
 
 bool culled(
     GpuInstance inst_2,
-    Ray ray_4,
+    Ray ray_5,
     Candidate c,
     device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Triangle _e4 = load_triangle(c.primitive, triangles, _buffer_sizes);
     metal::float3 _e12 = normal_to_world(inst_2, metal::cross(_e4.v1_ - _e4.v0_, _e4.v2_ - _e4.v0_));
-    bool _e17 = single_sided_seen_front(ray_4, metal::dot(ray_4.dir, _e12) < 0.0);
+    bool _e17 = single_sided_seen_front(ray_5, metal::dot(ray_5.dir, _e12) < 0.0);
     return !(_e17);
 }
 
@@ -740,7 +749,7 @@ metal::float3 decode_octahedral(
 }
 
 Hit finish_hit(
-    Ray ray_5,
+    Ray ray_6,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -752,9 +761,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_5.origin, ray_5.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_5.origin + (ray_5.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -795,7 +804,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_5.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -923,11 +932,11 @@ metal::float4 sample_texture(
     uint _e6 = params[t_1 + 1u];
     int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
-    int hi_2 = static_cast<int>(metal::max(_e14, 1u));
+    int hi_1 = static_cast<int>(metal::max(_e14, 1u));
     uint sampler = params[t_1 + 4u];
     uint mu = sampler & TEXTURE_WRAP_MASK;
     uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
-    metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
+    metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
     metal::float2 p_8 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_3) : (q_3 - metal::float2(0.5));
     metal::float2 f_2 = metal::floor(p_8);
     metal::float2 fr = p_8 - f_2;
@@ -935,7 +944,7 @@ metal::float4 sample_texture(
     int _e49 = i32_from_f32_(f_2.y);
     metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
     metal::uint2 xs = static_cast<metal::uint2>(_e50);
-    metal::int2 _e52 = wrap_texel_pair(_e49, hi_2, mv);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
     metal::uint2 ys = static_cast<metal::uint2>(_e52);
     uint x0_ = xs.x;
     uint x1_ = xs.y;
@@ -969,17 +978,17 @@ uint gltf_pcg(
 }
 
 float gltf_coverage(
-    Ray ray_6,
+    Ray ray_7,
     Hit hit_1,
     constant FrameUniforms& frame,
     thread type_4& scratch
 ) {
     uint h = {};
-    metal::uint3 o_1 = as_type<metal::uint3>(ray_6.origin);
-    metal::uint3 d_5 = as_type<metal::uint3>(ray_6.dir);
-    h = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_5.x * 3266489909u);
+    metal::uint3 o_1 = as_type<metal::uint3>(ray_7.origin);
+    metal::uint3 d_4 = as_type<metal::uint3>(ray_7.dir);
+    h = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u);
     uint _e20 = h;
-    h = ((_e20 ^ (d_5.y * 668265263u)) ^ (d_5.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
+    h = ((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
     uint _e33 = h;
     uint _e38 = frame_index_query(frame, scratch);
     h = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
@@ -996,16 +1005,16 @@ bool gltf_counts(
     float cutoff,
     uint blend,
     uint double_sided,
-    Ray ray_7,
+    Ray ray_8,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch
 ) {
-    if ((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW))) {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        float _e17 = gltf_coverage(ray_7, hit_2, frame, scratch);
+        float _e17 = gltf_coverage(ray_8, hit_2, frame, scratch);
         return _e17 < alpha;
     }
     return alpha >= cutoff;
@@ -1013,7 +1022,7 @@ bool gltf_counts(
 
 bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
-    Ray ray_8,
+    Ray ray_9,
     Hit hit_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1023,14 +1032,14 @@ bool gltf_masked_any_hit(
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
     float alpha_1 = m.base_color.w * _e7.w;
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3, frame, scratch);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3, frame, scratch);
     return _e13;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_9,
+    Ray ray_10,
     Hit hit_4,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1039,13 +1048,13 @@ bool dispatch_any_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4, frame, scratch, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4, frame, scratch, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_5,
-    Ray ray_10,
+    Ray ray_11,
     Candidate c_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1061,7 +1070,7 @@ bool accept(
     bool _e7 = (inst_5.flags & FLAG_CULL_BACK) != 0u;
     short_circuit = _e7;
     if (_e7) {
-        bool _e9 = culled(inst_5, ray_10, c_3, triangles, _buffer_sizes);
+        bool _e9 = culled(inst_5, ray_11, c_3, triangles, _buffer_sizes);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -1070,9 +1079,9 @@ bool accept(
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e19 = finish_hit(ray_10, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e19 = finish_hit(ray_11, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19, frame, scratch, params, texels, _buffer_sizes);
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19, frame, scratch, params, texels, _buffer_sizes);
         return _e23;
     }
     return true;
@@ -1149,7 +1158,7 @@ Candidate intersect_mesh(
     GpuInstance inst_6,
     uint slot_2,
     Ray world_ray,
-    Ray ray_11,
+    Ray ray_12,
     Candidate best_in,
     bool shadow,
     constant FrameUniforms& frame,
@@ -1172,23 +1181,22 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_11);
+    TriangleRay _e7 = prepare_triangle_ray(ray_12);
     uint base_2 = inst_6.blas_root;
-    GpuNode header_1 = nodes[base_2];
-    metal::float3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_11);
+    GpuNode header_2 = nodes[base_2];
+    BoxRay _e12 = header_box_ray(header_2, ray_12);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            uint _e27 = child;
-            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e34 = child;
-            uint first = _e34 & NODE_FIRST_MASK;
+        uint _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            uint _e22 = child;
+            uint count_1 = (_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e29 = child;
+            uint first = _e29 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -1196,88 +1204,88 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = _e80 + 1u;
+                    uint _e75 = k;
+                    k = _e75 + 1u;
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if (_e39 >= count_1) {
+                uint _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = (inst_6.triangle_offset + first) + _e43;
-                float _e47 = best.t;
-                metal::float3 _e51 = hit_triangle(_e7, prim, ray_11.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
-                uint _e54 = F32_INF;
-                if (_e51.x < as_type<float>(_e54)) {
-                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e63.w);
+                uint _e38 = k;
+                uint prim = (inst_6.triangle_offset + first) + _e38;
+                float _e42 = best.t;
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_6.object + tag) - 1u) : slot_2;
-                    Candidate c_11 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
-                    bool _e78 = accept(inst_6, world_ray, c_11, frame, scratch, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
-                    if (_e78) {
+                    Candidate c_11 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_6, world_ray, c_11, frame, scratch, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
+                    if (_e73) {
                         best = c_11;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_7 = nodes[base_2 + _e83];
-            float _e89 = best.t;
-            metal::float2 _e90 = children_entry(n_7, _e17, _e89, F32_INF);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
+            uint _e78 = child;
+            GpuNode n_7 = nodes[base_2 + _e78];
+            float _e84 = best.t;
+            metal::float2 _e85 = children_entry(n_7, _e12, _e84, F32_INF);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
                 near = n_7.a;
                 far = n_7.b;
                 if ((tr < tl) != shadow) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                uint _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 127u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = _e121 + 1u;
+                uint _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 127u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = _e116 + 1u;
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tl < as_type<float>(_e126)) {
+            uint _e121 = F32_INF;
+            if (tl < as_type<float>(_e121)) {
                 child = n_7.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if (tr < as_type<float>(_e131)) {
+            uint _e126 = F32_INF;
+            if (tr < as_type<float>(_e126)) {
                 child = n_7.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
-        if (_e137.x == NO_HIT) {
+        uint _e131 = sp_1;
+        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_12,
+    Ray ray_13,
     Candidate best_1,
     bool shadow_1,
     constant FrameUniforms& frame,
@@ -1295,12 +1303,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_8 = instances[slot_3];
-    Ray _e7 = to_object(inst_8, ray_12);
+    Ray _e7 = to_object(inst_8, ray_13);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1389,53 +1397,27 @@ Ray sample_camera_ray(
     thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_13 = {};
+    Ray ray_14 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_13 = _e7;
-    ray_13.depth = 0u;
-    ray_13.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_13.origin;
+    ray_14 = _e7;
+    ray_14.depth = 0u;
+    ray_14.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_14.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-    ray_13.medium = _e17;
-    Ray _e18 = ray_13;
+    ray_14.medium = _e17;
+    Ray _e18 = ray_14;
     return _e18;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
+metal::float3 node_frame_bounds(
 ) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_5 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_5 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
-float slab(
-    metal::float3 lo_1,
-    metal::float3 hi_1,
-    metal::float3 origin_3,
-    metal::float3 inv_dir,
-    float tmin_1,
-    float tmax_4,
-    thread uint& F32_INF
-) {
-    metal::float3 t0_1 = (lo_1 - origin_3) * inv_dir;
-    metal::float3 t1_1 = (hi_1 - origin_3) * inv_dir;
-    metal::float3 near_3 = metal::min(t0_1, t1_1);
-    metal::float3 far_3 = metal::max(t0_1, t1_1);
-    float enter_1 = metal::max(metal::max(near_3.x, near_3.y), metal::max(near_3.z, tmin_1));
-    float exit_1 = metal::min(metal::min(far_3.x, far_3.y) * 1.0000005, metal::min(far_3.z * 1.0000005, tmax_4));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    return metal::float3(65535.0);
 }
 
 Candidate intersect_scene(
-    Ray ray_14,
+    Ray ray_15,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1458,97 +1440,93 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_14.tmax);
+    Candidate _e7 = no_candidate(ray_15.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_14.dir);
     uint base_3 = frame_3.tlas_root;
-    GpuNode header_2 = nodes[base_3];
-    metal::float3 origin_4 = header_2.min;
-    metal::float3 scale_2 = header_2.max;
-    metal::float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27, F32_INF);
-    uint _e30 = F32_INF;
-    if (_e28 == as_type<float>(_e30)) {
-        Candidate _e33 = best_2;
-        return _e33;
+    GpuNode header_3 = nodes[base_3];
+    BoxRay _e19 = header_box_ray(header_3, ray_15);
+    metal::float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
+    uint _e29 = F32_INF;
+    if (_e27 == as_type<float>(_e29)) {
+        Candidate _e32 = best_2;
+        return _e32;
     }
-    metal::float3 _e34 = node_frame_hi(header_2);
-    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_14);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            uint _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_14, _e58, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    Candidate _e65 = best_2;
-                    return _e65;
+        uint _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            uint _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_15, _e54, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    Candidate _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_8 = nodes[base_3 + _e66];
-            float _e72 = best_2.t;
-            metal::float2 _e73 = children_entry(n_8, _e36, _e72, F32_INF);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_8 = nodes[base_3 + _e62];
+            float _e68 = best_2.t;
+            metal::float2 _e69 = children_entry(n_8, _e19, _e68, F32_INF);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
+            if ((tl_1 < as_type<float>(_e73)) && (tr_1 < as_type<float>(_e77))) {
                 near_1 = n_8.a;
                 far_1 = n_8.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_8.b;
                     far_1 = n_8.a;
                 }
-                uint _e92 = sp_2;
-                if (_e92 < TLAS_STACK) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack.inner[metal::min(_e95, 127u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = _e101 + 1u;
+                uint _e88 = sp_2;
+                if (_e88 < TLAS_STACK) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack.inner[metal::min(_e91, 127u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = _e97 + 1u;
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if (tl_1 < as_type<float>(_e106)) {
+            uint _e102 = F32_INF;
+            if (tl_1 < as_type<float>(_e102)) {
                 child_1 = n_8.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if (tr_1 < as_type<float>(_e111)) {
+            uint _e107 = F32_INF;
+            if (tr_1 < as_type<float>(_e107)) {
                 child_1 = n_8.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e112 = sp_2;
+        metal::uint2 _e113 = pop(0u, _e112, traversal_stack);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    return _e123;
+    Candidate _e119 = best_2;
+    return _e119;
 }
 
 SkyGradient load_SkyGradient(
@@ -1570,9 +1548,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_7,
-    Ray ray_15
+    Ray ray_16
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_15.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_16.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_7.horizon, b_7.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1583,17 +1561,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_16,
+    Ray ray_17,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_16);
+    metal::float3 _e3 = sky_gradient(_e2, ray_17);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_17,
+    Ray ray_18,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1602,15 +1580,15 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shading_normal(
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
     return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1822,8 +1800,8 @@ metal::float3 offset_origin(
     metal::float3 n_4,
     float error
 ) {
-    float d_6 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_13 = n_4 * metal::float3(d_6);
+    float d_5 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_13 = n_4 * metal::float3(d_5);
     metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
     return _e17;
 }
@@ -1837,7 +1815,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_5 = {};
-    float tmax_5 = {};
+    float tmax_4 = {};
     n_5 = normal_5;
     metal::float3 _e5 = n_5;
     if (metal::dot(dir_2, _e5) < 0.0) {
@@ -1850,16 +1828,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_5;
     metal::float3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = as_type<float>(_e25);
+    tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist_1 < as_type<float>(_e29)) {
         metal::float3 light = position_4 + (dir_2 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_2, dir_2);
-        float along_1 = metal::dot(light - _e23, dir_2) / dd_1;
+        float dd = metal::dot(dir_2, dir_2);
+        float along_1 = metal::dot(light - _e23, dir_2) / dd;
         metal::float3 l_2 = metal::abs(position_4) + metal::abs(dir_2 * metal::float3(dist_1));
-        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd));
     }
-    float _e59 = tmax_5;
+    float _e59 = tmax_4;
     return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -1994,8 +1972,8 @@ float pbr_ggx_d(
     float ndh,
     float a2_
 ) {
-    float d_7 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-    return (a2_ * INV_PI) / (d_7 * d_7);
+    float d_6 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_6 * d_6);
 }
 
 float pbr_smith_v(
@@ -2014,7 +1992,7 @@ metal::float3 gltf_radiance(
     float roughness_1,
     float occlusion_1,
     metal::float3 emissive,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_6,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2034,8 +2012,8 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e7 = shading_normal(ray_19, hit_6);
-    metal::float3 _e9 = normalize_vec3f(ray_19.dir);
+    metal::float3 _e7 = shading_normal(ray_20, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_20.dir);
     metal::float3 v_4 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
@@ -2076,7 +2054,7 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_7,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2096,7 +2074,7 @@ metal::float3 gltf_masked_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_12 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_21, hit_7, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
@@ -2120,7 +2098,7 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_8,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2140,14 +2118,14 @@ metal::float3 gltf_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_13 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_22, hit_8, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_22,
+    Ray ray_23,
     Hit hit_9,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -2169,12 +2147,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_23, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_22, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_23, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -2185,7 +2163,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_23,
+    Ray ray_24,
     Candidate c_6,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2204,15 +2182,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
-    Hit _e6 = finish_hit(ray_23, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_24, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_24,
+    Ray ray_25,
     float t_2,
     metal::float3 radiance
 ) {
@@ -2220,7 +2198,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_25,
+    Ray ray_26,
     float t_3,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2229,21 +2207,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_25.medium == 0u) {
+    if (ray_26.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_10 = instances[ray_25.medium - 1u];
+    GpuInstance inst_10 = instances[ray_26.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_26,
+    Ray ray_27,
     Hit hit_10
 ) {
     return;
@@ -2301,7 +2279,7 @@ metal::float3 trace(
     float t_4 = {};
     type_21 stack = {};
     uint depth = {};
-    Ray ray_27 = {};
+    Ray ray_28 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2339,7 +2317,7 @@ metal::float3 trace(
     }
     stack = type_21 {};
     depth = 0u;
-    ray_27 = camera_ray;
+    ray_28 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2358,10 +2336,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_27;
+            Ray _e67 = ray_28;
             Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_27;
+            Ray _e70 = ray_28;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2498,7 +2476,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_15, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_27 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_28 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -390,19 +390,19 @@ fn sobol_second_reversed(i: u32) -> u32 {
 fn rand_next() -> f32 {
     var x_2: u32;
 
-    let d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    let d = rng_state;
+    rng_state = (d + 1u);
     let _e10 = scratch[min(SCRATCH_RNG_SEED, 24u)];
-    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     let _e22 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
     let i_7 = reverseBits(_e24);
     x_2 = i_7;
-    if ((d_1 & 1u) != 0u) {
+    if ((d & 1u) != 0u) {
         let _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     let _e45 = x_2;
     let _e46 = laine_karras(_e45, scramble);
     return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
@@ -456,27 +456,27 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_2 = vec4<f32>(ray.dir, 0f);
+    let d_1 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     let _e25 = r;
     return _e25;
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_3);
+    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_2);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_3[min(kz, 2u)];
+    let dz = d_2[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
@@ -491,15 +491,21 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
 fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
     let m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_3) >> 23u) & 255u), 1u), 253u);
-    let d_4 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
+    let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
     let unit = bitcast<f32>((e << 23u));
     let floor_ = vec3(0.0000000000009094947f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d_4 < vec3(0f)));
-    let inv = (vec3(1f) / select(d_4, (s_3 * floor_), (abs(d_4) < floor_)));
+    let s_3 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
+    let inv = (vec3(1f) / select(d_3, (s_3 * floor_), (abs(d_3) < floor_)));
     let rel = (origin_1 - ray_2.origin);
     let start = (rel * inv);
     let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
+fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
+    let _e4 = node_frame_hi(header_1);
+    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
+    return _e7;
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -548,14 +554,14 @@ fn normal_to_world(inst_1: GpuInstance, n: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn single_sided_seen_front(ray_3: Ray, front_face: bool) -> bool {
-    return (front_face != (ray_3.kind == RAY_SHADOW));
+fn single_sided_seen_front(ray_4: Ray, front_face: bool) -> bool {
+    return (front_face != (ray_4.kind == RAY_SHADOW));
 }
 
-fn culled(inst_2: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn culled(inst_2: GpuInstance, ray_5: Ray, c: Candidate) -> bool {
     let _e4 = load_triangle(c.primitive);
     let _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    let _e17 = single_sided_seen_front(ray_4, (dot(ray_4.dir, _e12) < 0f));
+    let _e17 = single_sided_seen_front(ray_5, (dot(ray_5.dir, _e12) < 0f));
     return !(_e17);
 }
 
@@ -600,15 +606,15 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_5.origin, (ray_5.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -649,7 +655,7 @@ fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_5.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -742,11 +748,11 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
     let wi = i32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
-    let hi_2 = i32(max(_e14, 1u));
+    let hi_1 = i32(max(_e14, 1u));
     let sampler_ = params[(t_1 + 4u)];
     let mu = (sampler_ & TEXTURE_WRAP_MASK);
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_2)));
+    let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_1)));
     let p_8 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
     let f_2 = floor(p_8);
     let fr = (p_8 - f_2);
@@ -754,7 +760,7 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e49 = i32_from_f32_(f_2.y);
     let _e50 = wrap_texel_pair(_e47, wi, mu);
     let xs = vec2<u32>(_e50);
-    let _e52 = wrap_texel_pair(_e49, hi_2, mv);
+    let _e52 = wrap_texel_pair(_e49, hi_1, mv);
     let ys = vec2<u32>(_e52);
     let x0_ = xs.x;
     let x1_ = xs.y;
@@ -782,14 +788,14 @@ fn gltf_pcg(x_5: u32) -> u32 {
     return ((word_1 >> 22u) ^ word_1);
 }
 
-fn gltf_coverage(ray_6: Ray, hit_1: Hit) -> f32 {
+fn gltf_coverage(ray_7: Ray, hit_1: Hit) -> f32 {
     var h: u32;
 
-    let o_1 = bitcast<vec3<u32>>(ray_6.origin);
-    let d_5 = bitcast<vec3<u32>>(ray_6.dir);
-    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_5.x * 3266489909u));
+    let o_1 = bitcast<vec3<u32>>(ray_7.origin);
+    let d_4 = bitcast<vec3<u32>>(ray_7.dir);
+    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
     let _e20 = h;
-    h = (((_e20 ^ (d_5.y * 668265263u)) ^ (d_5.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
     let _e33 = h;
     let _e38 = frame_index_query();
     h = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
@@ -801,37 +807,37 @@ fn gltf_coverage(ray_6: Ray, hit_1: Hit) -> f32 {
     return (f32((_e45 >> 8u)) * (1f / 16777216f));
 }
 
-fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_7: Ray, hit_2: Hit) -> bool {
-    if ((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW))) {
+fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_8: Ray, hit_2: Hit) -> bool {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        let _e17 = gltf_coverage(ray_7, hit_2);
+        let _e17 = gltf_coverage(ray_8, hit_2);
         return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_8: Ray, hit_3: Hit) -> bool {
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_9: Ray, hit_3: Hit) -> bool {
     let _e7 = sample_texture(m.base_texture, hit_3.uv);
     let alpha_1 = (m.base_color.w * _e7.w);
-    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3);
+    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3);
     return _e13;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_9: Ray, hit_4: Hit) -> bool {
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_10: Ray, hit_4: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4);
+    let _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4);
     return _e4;
 }
 
-fn accept(inst_5: GpuInstance, ray_10: Ray, c_3: Candidate) -> bool {
+fn accept(inst_5: GpuInstance, ray_11: Ray, c_3: Candidate) -> bool {
     var short_circuit: bool;
 
     let _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
     short_circuit = _e7;
     if _e7 {
-        let _e9 = culled(inst_5, ray_10, c_3);
+        let _e9 = culled(inst_5, ray_11, c_3);
         short_circuit = _e9;
     }
     let _e10 = short_circuit;
@@ -840,9 +846,9 @@ fn accept(inst_5: GpuInstance, ray_10: Ray, c_3: Candidate) -> bool {
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e19 = finish_hit(ray_10, c_3);
+        let _e19 = finish_hit(ray_11, c_3);
         hit_error = shaded;
-        let _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19);
+        let _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19);
         return _e23;
     }
     return true;
@@ -896,7 +902,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_11: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_12: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -905,111 +911,110 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_11: Ray,
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_11);
+    let _e7 = prepare_triangle_ray(ray_12);
     let base_2 = inst_6.blas_root;
-    let header_1 = nodes[base_2];
-    let _e14 = node_frame_hi(header_1);
-    let _e17 = box_ray(header_1.min, header_1.max, (_e14 - header_1.min), ray_11);
+    let header_2 = nodes[base_2];
+    let _e12 = header_box_ray(header_2, ray_12);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     loop {
-        let _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            let _e27 = child;
-            let count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            let _e34 = child;
-            let first = (_e34 & NODE_FIRST_MASK);
+        let _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            let _e22 = child;
+            let count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            let _e29 = child;
+            let first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             loop {
-                let _e39 = k;
-                if (_e39 >= count_1) {
+                let _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                let _e43 = k;
-                let prim = ((inst_6.triangle_offset + first) + _e43);
-                let _e47 = best.t;
-                let _e51 = hit_triangle(_e7, prim, ray_11.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                let _e54 = F32_INF;
-                if (_e51.x < bitcast<f32>(_e54)) {
-                    let _e63 = triangles[((prim * 3u) + 1u)];
-                    let tag = bitcast<u32>(_e63.w);
+                let _e38 = k;
+                let prim = ((inst_6.triangle_offset + first) + _e38);
+                let _e42 = best.t;
+                let _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e49 = F32_INF;
+                if (_e46.x < bitcast<f32>(_e49)) {
+                    let _e58 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_2, ((inst_6.object + tag) - 1u), (tag != 0u));
-                    let c_11 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0f));
-                    let _e78 = accept(inst_6, world_ray, c_11);
-                    if _e78 {
+                    let c_11 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_6, world_ray, c_11);
+                    if _e73 {
                         best = c_11;
                         if shadow {
-                            let _e79 = best;
-                            return _e79;
+                            let _e74 = best;
+                            return _e74;
                         }
                     }
                 }
                 continuing {
-                    let _e80 = k;
-                    k = (_e80 + 1u);
+                    let _e75 = k;
+                    k = (_e75 + 1u);
                 }
             }
         } else {
-            let _e83 = child;
-            let n_7 = nodes[(base_2 + _e83)];
-            let _e89 = best.t;
-            let _e90 = children_entry(n_7, _e17, _e89);
-            let tl = _e90.x;
-            let tr = _e90.y;
-            let _e94 = F32_INF;
-            let _e98 = F32_INF;
-            if ((tl < bitcast<f32>(_e94)) && (tr < bitcast<f32>(_e98))) {
+            let _e78 = child;
+            let n_7 = nodes[(base_2 + _e78)];
+            let _e84 = best.t;
+            let _e85 = children_entry(n_7, _e12, _e84);
+            let tl = _e85.x;
+            let tr = _e85.y;
+            let _e89 = F32_INF;
+            let _e93 = F32_INF;
+            if ((tl < bitcast<f32>(_e89)) && (tr < bitcast<f32>(_e93))) {
                 near = n_7.a;
                 far = n_7.b;
                 if ((tr < tl) != shadow) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                let _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    let _e114 = sp_1;
-                    let _e116 = far;
-                    traversal_stack[min((TLAS_STACK + _e114), 127u)] = _e116;
-                    let _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                let _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    let _e109 = sp_1;
+                    let _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 127u)] = _e111;
+                    let _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                let _e124 = near;
-                child = _e124;
+                let _e119 = near;
+                child = _e119;
                 continue;
             }
-            let _e126 = F32_INF;
-            if (tl < bitcast<f32>(_e126)) {
+            let _e121 = F32_INF;
+            if (tl < bitcast<f32>(_e121)) {
                 child = n_7.a;
                 continue;
             }
-            let _e131 = F32_INF;
-            if (tr < bitcast<f32>(_e131)) {
+            let _e126 = F32_INF;
+            if (tr < bitcast<f32>(_e126)) {
                 child = n_7.b;
                 continue;
             }
         }
-        let _e136 = sp_1;
-        let _e137 = pop(TLAS_STACK, _e136);
-        if (_e137.x == NO_HIT) {
+        let _e131 = sp_1;
+        let _e132 = pop(TLAS_STACK, _e131);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    let _e143 = best;
-    return _e143;
+    let _e138 = best;
+    return _e138;
 }
 
-fn intersect_object(slot_3: u32, ray_12: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_13: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_8 = instances[slot_3];
-    let _e7 = to_object(inst_8, ray_12);
+    let _e7 = to_object(inst_8, ray_13);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -1062,43 +1067,26 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_13: Ray;
+    var ray_14: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_13 = _e7;
-    ray_13.depth = 0u;
-    ray_13.kind = RAY_CAMERA;
-    let _e15 = ray_13.origin;
+    ray_14 = _e7;
+    ray_14.depth = 0u;
+    ray_14.kind = RAY_CAMERA;
+    let _e15 = ray_14.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_13.medium = _e17;
-    let _e18 = ray_13;
+    ray_14.medium = _e17;
+    let _e18 = ray_14;
     return _e18;
 }
 
-fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
-    let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_5 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_5 * tiny), (abs(d) < tiny));
-    return (vec3(1f) / dd);
+fn node_frame_bounds() -> vec3<f32> {
+    return vec3(65535f);
 }
 
-fn slab(lo_1: vec3<f32>, hi_1: vec3<f32>, origin_3: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_4: f32) -> f32 {
-    let t0_1 = ((lo_1 - origin_3) * inv_dir);
-    let t1_1 = ((hi_1 - origin_3) * inv_dir);
-    let near_3 = min(t0_1, t1_1);
-    let far_3 = max(t0_1, t1_1);
-    let enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    let exit_1 = min((min(far_3.x, far_3.y) * 1.0000005f), min((far_3.z * 1.0000005f), tmax_4));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    let _e30 = F32_INF;
-    return bitcast<f32>(_e30);
-}
-
-fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -1107,94 +1095,90 @@ fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_14.tmax);
+    let _e7 = no_candidate(ray_15.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_14.dir);
     let base_3 = frame_3.tlas_root;
-    let header_2 = nodes[base_3];
-    let origin_4 = header_2.min;
-    let scale_2 = header_2.max;
-    let _e23 = node_frame_hi(header_2);
-    let _e27 = best_2.t;
-    let _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
-    let _e30 = F32_INF;
-    if (_e28 == bitcast<f32>(_e30)) {
-        let _e33 = best_2;
-        return _e33;
+    let header_3 = nodes[base_3];
+    let _e19 = header_box_ray(header_3, ray_15);
+    let _e22 = node_frame_bounds();
+    let _e24 = best_2.t;
+    let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
+    let _e29 = F32_INF;
+    if (_e27 == bitcast<f32>(_e29)) {
+        let _e32 = best_2;
+        return _e32;
     }
-    let _e34 = node_frame_hi(header_2);
-    let _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_14);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     loop {
-        let _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            let _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                let _e55 = child_1;
-                let _e58 = best_2;
-                let _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_14, _e58, shadow_2);
-                best_2 = _e59;
-                let _e61 = best_2.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    let _e65 = best_2;
-                    return _e65;
+        let _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            let _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e51 = child_1;
+                let _e54 = best_2;
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                best_2 = _e55;
+                let _e57 = best_2.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    let _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            let _e66 = child_1;
-            let n_8 = nodes[(base_3 + _e66)];
-            let _e72 = best_2.t;
-            let _e73 = children_entry(n_8, _e36, _e72);
-            let tl_1 = _e73.x;
-            let tr_1 = _e73.y;
+            let _e62 = child_1;
+            let n_8 = nodes[(base_3 + _e62)];
+            let _e68 = best_2.t;
+            let _e69 = children_entry(n_8, _e19, _e68);
+            let tl_1 = _e69.x;
+            let tr_1 = _e69.y;
+            let _e73 = F32_INF;
             let _e77 = F32_INF;
-            let _e81 = F32_INF;
-            if ((tl_1 < bitcast<f32>(_e77)) && (tr_1 < bitcast<f32>(_e81))) {
+            if ((tl_1 < bitcast<f32>(_e73)) && (tr_1 < bitcast<f32>(_e77))) {
                 near_1 = n_8.a;
                 far_1 = n_8.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_8.b;
                     far_1 = n_8.a;
                 }
-                let _e92 = sp_2;
-                if (_e92 < TLAS_STACK) {
-                    let _e95 = sp_2;
-                    let _e96 = far_1;
-                    traversal_stack[min(_e95, 127u)] = _e96;
-                    let _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                let _e88 = sp_2;
+                if (_e88 < TLAS_STACK) {
+                    let _e91 = sp_2;
+                    let _e92 = far_1;
+                    traversal_stack[min(_e91, 127u)] = _e92;
+                    let _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                let _e104 = near_1;
-                child_1 = _e104;
+                let _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            let _e106 = F32_INF;
-            if (tl_1 < bitcast<f32>(_e106)) {
+            let _e102 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e102)) {
                 child_1 = n_8.a;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (tr_1 < bitcast<f32>(_e111)) {
+            let _e107 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e107)) {
                 child_1 = n_8.b;
                 continue;
             }
         }
-        let _e116 = sp_2;
-        let _e117 = pop(0u, _e116);
-        if (_e117.x == NO_HIT) {
+        let _e112 = sp_2;
+        let _e113 = pop(0u, _e112);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    let _e123 = best_2;
-    return _e123;
+    let _e119 = best_2;
+    return _e119;
 }
 
 fn load_SkyGradient(offset_4: u32) -> SkyGradient {
@@ -1210,8 +1194,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_7: SkyGradient, ray_15: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_15.dir);
+fn sky_gradient(b_7: SkyGradient, ray_16: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_16.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_7.horizon, b_7.ground, vec3(min((-(y) * 4f), 1f)));
@@ -1219,23 +1203,23 @@ fn sky_gradient(b_7: SkyGradient, ray_15: Ray) -> vec3<f32> {
     return mix(b_7.horizon, b_7.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_16: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_17: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_16);
+    let _e3 = sky_gradient(_e2, ray_17);
     return _e3;
 }
 
-fn miss(ray_17: Ray) -> vec3<f32> {
+fn miss(ray_18: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
     return _e9;
 }
 
-fn shading_normal(ray_18: Ray, hit_5: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
+fn shading_normal(ray_19: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
     return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1384,15 +1368,15 @@ fn step_toward(x_6: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
 }
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_6 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_13 = (n_4 * vec3(d_6));
+    let d_5 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_13 = (n_4 * vec3(d_5));
     let _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 fn shadow_ray(position_4: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> Ray {
     var n_5: vec3<f32>;
-    var tmax_5: f32;
+    var tmax_4: f32;
 
     n_5 = normal_5;
     let _e5 = n_5;
@@ -1406,16 +1390,16 @@ fn shadow_ray(position_4: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, dist
     let _e22 = n_5;
     let _e23 = offset_origin(position_4, _e22, error_3);
     let _e25 = F32_INF;
-    tmax_5 = bitcast<f32>(_e25);
+    tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist_1 < bitcast<f32>(_e29)) {
         let light = (position_4 + (dir_2 * vec3(dist_1)));
-        let dd_1 = dot(dir_2, dir_2);
-        let along_1 = (dot((light - _e23), dir_2) / dd_1);
+        let dd = dot(dir_2, dir_2);
+        let along_1 = (dot((light - _e23), dir_2) / dd);
         let l_2 = (abs(position_4) + abs((dir_2 * vec3(dist_1))));
-        tmax_5 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd)));
     }
-    let _e59 = tmax_5;
+    let _e59 = tmax_4;
     return Ray(_e23, 0f, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
@@ -1505,8 +1489,8 @@ fn pbr_fresnel(f0_: vec3<f32>, c_4: f32) -> vec3<f32> {
 }
 
 fn pbr_ggx_d(ndh: f32, a2_: f32) -> f32 {
-    let d_7 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
-    return ((a2_ * INV_PI) / (d_7 * d_7));
+    let d_6 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
+    return ((a2_ * INV_PI) / (d_6 * d_6));
 }
 
 fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
@@ -1515,12 +1499,12 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f32, emissive: vec3<f32>, ray_19: Ray, hit_6: Hit) -> vec3<f32> {
+fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f32, emissive: vec3<f32>, ray_20: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
-    let _e7 = shading_normal(ray_19, hit_6);
-    let _e9 = normalize_vec3f(ray_19.dir);
+    let _e7 = shading_normal(ray_20, hit_6);
+    let _e9 = normalize_vec3f(ray_20.dir);
     let v_4 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
@@ -1554,10 +1538,10 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f
     return _e68;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_20: Ray, hit_7: Hit) -> vec3<f32> {
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_21: Ray, hit_7: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     let c_12 = (m_1.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_20, hit_7);
+    let _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_21, hit_7);
     return _e14;
 }
 
@@ -1575,23 +1559,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_21: Ray, hit_8: Hit) -> vec3<f32> {
+fn gltf_shade(m_2: GltfMaterial, ray_22: Ray, hit_8: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     let c_13 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_21, hit_8);
+    let _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_22, hit_8);
     return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_22: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_23: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
+            let _e5 = gltf_masked_shade(_e4, ray_23, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_22, hit_9);
+            let _e7 = gltf_shade(_e6, ray_23, hit_9);
             return _e7;
         }
         default: {
@@ -1600,33 +1584,33 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_22: Ray, hit_9: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_23: Ray, c_6: Candidate) -> vec3<f32> {
+fn shade_direct(ray_24: Ray, c_6: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_6.slot];
-    let _e6 = finish_hit(ray_23, c_6);
-    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_24, c_6);
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_24: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_25: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_25: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_26: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_25.medium == 0u) {
+    if (ray_26.medium == 0u) {
         return radiance_1;
     }
-    let inst_10 = instances[(ray_25.medium - 1u)];
+    let inst_10 = instances[(ray_26.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_26: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_27: Ray, hit_10: Hit) {
     return;
 }
 
@@ -1654,7 +1638,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_27: Ray;
+    var ray_28: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1693,7 +1677,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_27 = camera_ray;
+    ray_28 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1709,10 +1693,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_27;
+            let _e67 = ray_28;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_27;
+            let _e70 = ray_28;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1844,7 +1828,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_15, _e283, dir_8);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_27 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_28 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -475,19 +475,19 @@ float rand_next()
 {
     uint x_2 = (uint)0;
 
-    uint d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    uint d = rng_state;
+    rng_state = (d + 1u);
     uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 24u)), 24u)];
-    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    const uint _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_7 = reversebits(_e24);
     x_2 = i_7;
-    if (((d_1 & 1u) != 0u)) {
+    if (((d & 1u) != 0u)) {
         const uint _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     uint _e45 = x_2;
     const uint _e46 = laine_karras(_e45, scramble);
     return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
@@ -538,16 +538,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_23;
+    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_24;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_24 = _e4;
-    return ray_24;
+    const Ray ray_25 = _e4;
+    return ray_25;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -572,12 +572,12 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_2 = float4(ray.dir, 0.0);
+    float4 d_1 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_25 = _e25;
-    return ray_25;
+    const Ray ray_26 = _e25;
+    return ray_26;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -593,19 +593,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_3);
+    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_2);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -634,16 +634,24 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
 {
     float m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_1) >> 23u) & 255u), 1u), 253u);
-    float3 d_4 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
+    float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
     float unit = asfloat((e << 23u));
     float3 floor_ = (9.094947e-13).xxx;
-    float3 s_4 = ((d_4 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 inv = ((1.0).xxx / ((abs(d_4) < floor_) ? (s_4 * floor_) : d_4));
+    float3 s_4 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_4 * floor_) : d_3));
     float3 rel = (origin_1 - ray_2.origin);
     float3 start = (rel * inv);
     float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
     const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
+}
+
+BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
+{
+    const float3 _e4 = node_frame_hi(header_1);
+    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
+    const BoxRay boxray_1 = _e7;
+    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -680,7 +688,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_8 ? float3(t_6, (v_3 * rcp_), (w * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
 {
     return true;
 }
@@ -747,7 +755,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -757,23 +765,22 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_1 = inst_2.blas_root;
-    GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    const float3 _e14 = node_frame_hi(header_1);
-    const BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
+    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
+    const BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
-            uint _e27 = child;
-            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e34 = child;
-            uint first = (_e34 & NODE_FIRST_MASK);
+        uint _e17 = child;
+        if (((_e17 & NODE_LEAF_BIT) != 0u)) {
+            uint _e22 = child;
+            uint count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e29 = child;
+            uint first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -781,84 +788,84 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = (_e80 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if ((_e39 >= count_1)) {
+                uint _e34 = k;
+                if ((_e34 >= count_1)) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e43);
-                float _e47 = best.t;
-                const float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                uint _e54 = F32_INF;
-                if ((_e51.x < asfloat(_e54))) {
-                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e63.w);
+                uint _e38 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e38);
+                float _e42 = best.t;
+                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                uint _e49 = F32_INF;
+                if ((_e46.x < asfloat(_e49))) {
+                    float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
-                    const bool _e78 = accept(inst_2, world_ray, c_6);
-                    if (_e78) {
+                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_6);
+                    if (_e73) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            const Candidate candidate_1 = _e79;
+                            Candidate _e74 = best;
+                            const Candidate candidate_1 = _e74;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e83)*32+0)), asuint(nodes.Load((base_1 + _e83)*32+12)), asfloat(nodes.Load3((base_1 + _e83)*32+16)), asuint(nodes.Load((base_1 + _e83)*32+28)));
-            float _e89 = best.t;
-            const float2 _e90 = children_entry(n_8, _e17, _e89);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
+            uint _e78 = child;
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e78)*32+0)), asuint(nodes.Load((base_1 + _e78)*32+12)), asfloat(nodes.Load3((base_1 + _e78)*32+16)), asuint(nodes.Load((base_1 + _e78)*32+28)));
+            float _e84 = best.t;
+            const float2 _e85 = children_entry(n_8, _e12, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < asfloat(_e89)) && (tr < asfloat(_e93)))) {
                 near = n_8.a;
                 far = n_8.b;
                 if (((tr < tl) != shadow)) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e110 = sp_1;
-                if ((_e110 < BLAS_STACK)) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 69u)), 69u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e109), 69u)), 69u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tl < asfloat(_e126))) {
+            uint _e121 = F32_INF;
+            if ((tl < asfloat(_e121))) {
                 child = n_8.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if ((tr < asfloat(_e131))) {
+            uint _e126 = F32_INF;
+            if ((tr < asfloat(_e126))) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        const uint2 _e137 = pop(TLAS_STACK, _e136);
-        if ((_e137.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        const uint2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    const Candidate candidate_2 = _e143;
+    Candidate _e138 = best;
+    const Candidate candidate_2 = _e138;
     return candidate_2;
 }
 
@@ -893,17 +900,17 @@ float2 ZeroValuefloat2() {
     return (float2)0;
 }
 
-Intersection box_intersect(Box b_6, Ray ray_5)
+Intersection box_intersect(Box b_6, Ray ray_6)
 {
     float t = (float)0;
     uint axis = (uint)0;
     float sign_ = (float)0;
     float3 n_1 = (float3)0;
 
-    bool3 tiny = (abs(ray_5.dir) < (1e-30).xxx);
-    float3 inv_1 = ((1.0).xxx / (tiny ? (1e-30).xxx : ray_5.dir));
-    float3 t_lo = ((b_6.min_ - ray_5.origin) * inv_1);
-    float3 t_hi = ((b_6.max_ - ray_5.origin) * inv_1);
+    bool3 tiny = (abs(ray_6.dir) < (1e-30).xxx);
+    float3 inv_1 = ((1.0).xxx / (tiny ? (1e-30).xxx : ray_6.dir));
+    float3 t_lo = ((b_6.min_ - ray_6.origin) * inv_1);
+    float3 t_hi = ((b_6.max_ - ray_6.origin) * inv_1);
     float3 near_3 = min(t_lo, t_hi);
     float3 far_3 = max(t_lo, t_hi);
     float entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -916,14 +923,14 @@ Intersection box_intersect(Box b_6, Ray ray_5)
     t = entry;
     axis = ((entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u));
     sign_ = -1.0;
-    if (!((entry >= ray_5.tmin))) {
+    if (!((entry >= ray_6.tmin))) {
         t = exit_1;
         axis = ((exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u));
         sign_ = 1.0;
     }
     float _e71 = t;
     float _e74 = t;
-    if (!(((_e71 >= ray_5.tmin) && (_e74 <= ray_5.tmax)))) {
+    if (!(((_e71 >= ray_6.tmin) && (_e74 <= ray_6.tmax)))) {
         uint _e80 = F32_INF;
         const Intersection intersection_1 = ConstructIntersection(asfloat(_e80), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_1;
@@ -932,9 +939,9 @@ Intersection box_intersect(Box b_6, Ray ray_5)
     uint _e91 = axis;
     float _e95 = sign_;
     uint _e99 = axis;
-    n_1[min(uint(min(_e91, 2u)), 2u)] = (_e95 * ((ray_5.dir[min(uint(min(_e99, 2u)), 2u)] >= 0.0) ? 1.0 : -1.0));
+    n_1[min(uint(min(_e91, 2u)), 2u)] = (_e95 * ((ray_6.dir[min(uint(min(_e99, 2u)), 2u)] >= 0.0) ? 1.0 : -1.0));
     float _e109 = t;
-    float3 rel_1 = (((ray_5.origin + (ray_5.dir * (_e109).xxx)) - b_6.min_) / max((b_6.max_ - b_6.min_), (1e-30).xxx));
+    float3 rel_1 = (((ray_6.origin + (ray_6.dir * (_e109).xxx)) - b_6.min_) / max((b_6.max_ - b_6.min_), (1e-30).xxx));
     uint _e124 = axis;
     uint _e129 = axis;
     float2 uv = ((_e129 == 0u) ? rel_1.zy : ((_e124 == 1u) ? rel_1.xz : rel_1.xy));
@@ -961,14 +968,14 @@ Sphere load_Sphere(uint offset_3)
     return sphere;
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_6)
+Intersection sphere_intersect(Sphere s, Ray ray_7)
 {
     float t_1 = (float)0;
 
-    float3 f_2 = (ray_6.origin - s.center_);
-    float a_5 = dot(ray_6.dir, ray_6.dir);
-    float b_9 = -(dot(f_2, ray_6.dir));
-    float3 l_4 = (f_2 + (ray_6.dir * ((b_9 / a_5)).xxx));
+    float3 f_2 = (ray_7.origin - s.center_);
+    float a_5 = dot(ray_7.dir, ray_7.dir);
+    float b_9 = -(dot(f_2, ray_7.dir));
+    float3 l_4 = (f_2 + (ray_7.dir * ((b_9 / a_5)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_4, l_4)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -981,18 +988,18 @@ Intersection sphere_intersect(Sphere s, Ray ray_6)
     float t1_1 = (q_1 / a_5);
     t_1 = min(t0_1, t1_1);
     float _e52 = t_1;
-    if (!((_e52 >= ray_6.tmin))) {
+    if (!((_e52 >= ray_7.tmin))) {
         t_1 = max(t0_1, t1_1);
     }
     float _e57 = t_1;
     float _e60 = t_1;
-    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
+    if (!(((_e57 >= ray_7.tmin) && (_e60 <= ray_7.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_4 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_4;
     }
     float _e76 = t_1;
-    const float3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * (_e76).xxx)) - s.center_));
+    const float3 _e82 = normalize_vec3f(((ray_7.origin + (ray_7.dir * (_e76).xxx)) - s.center_));
     float u_1 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv_1 = float2(u_1, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t_1;
@@ -1004,18 +1011,18 @@ Intersection ZeroValueIntersection() {
     return (Intersection)0;
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_7)
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_8)
 {
     switch(type_id_1) {
         case 0u: {
             const Box _e3 = load_Box(offset_4);
-            const Intersection _e4 = box_intersect(_e3, ray_7);
+            const Intersection _e4 = box_intersect(_e3, ray_8);
             const Intersection intersection_6 = _e4;
             return intersection_6;
         }
         case 1u: {
             const Sphere _e5 = load_Sphere(offset_4);
-            const Intersection _e6 = sphere_intersect(_e5, ray_7);
+            const Intersection _e6 = sphere_intersect(_e5, ray_8);
             const Intersection intersection_7 = _e6;
             return intersection_7;
         }
@@ -1046,17 +1053,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_8);
+    const Ray _e7 = to_object(inst_6, ray_9);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_9, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1067,7 +1074,7 @@ Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
         Candidate c_7 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_8, c_7);
+        const bool _e40 = accept(inst_6, ray_9, c_7);
         if (_e40) {
             const Candidate candidate_4 = c_7;
             return candidate_4;
@@ -1159,16 +1166,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_9, Candidate c_1)
+Hit finish_hit(Ray ray_10, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_9.origin, (ray_9.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_10.origin, (ray_10.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_9.origin + (ray_9.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_10.origin + (ray_10.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -1212,7 +1219,7 @@ Hit finish_hit(Ray ray_9, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_10.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_9 = _e151;
     return hit_9;
@@ -1272,46 +1279,28 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_10 = (Ray)0;
+    Ray ray_11 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    float3 _e15 = ray_10.origin;
+    ray_11 = _e7;
+    ray_11.depth = 0u;
+    ray_11.kind = RAY_CAMERA;
+    float3 _e15 = ray_11.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
-    const Ray ray_26 = _e18;
-    return ray_26;
+    ray_11.medium = _e17;
+    Ray _e18 = ray_11;
+    const Ray ray_27 = _e18;
+    return ray_27;
 }
 
-float3 safe_inverse(float3 d)
+float3 node_frame_bounds()
 {
-    float3 tiny_1 = (1.1754944e-38).xxx;
-    float3 s_6 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny_1) ? (s_6 * tiny_1) : d);
-    return ((1.0).xxx / dd);
+    return (65535.0).xxx;
 }
 
-float slab(float3 lo_1, float3 hi_1, float3 origin_3, float3 inv_dir, float tmin_1, float tmax_4)
-{
-    float3 t0_2 = ((lo_1 - origin_3) * inv_dir);
-    float3 t1_2 = ((hi_1 - origin_3) * inv_dir);
-    float3 near_4 = min(t0_2, t1_2);
-    float3 far_4 = max(t0_2, t1_2);
-    float enter_1 = max(max(near_4.x, near_4.y), max(near_4.z, tmin_1));
-    float exit_2 = min((min(far_4.x, far_4.y) * 1.0000005), min((far_4.z * 1.0000005), tmax_4));
-    if ((enter_1 <= exit_2)) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return asfloat(_e30);
-}
-
-Candidate intersect_scene(Ray ray_11, bool shadow_2)
+Candidate intersect_scene(Ray ray_12, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1321,7 +1310,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_11.tmax);
+    const Candidate _e7 = no_candidate(ray_12.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1329,92 +1318,88 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
         const Candidate candidate_6 = _e14;
         return candidate_6;
     }
-    const float3 _e16 = safe_inverse(ray_11.dir);
     uint base_2 = frame_3.tlas_root;
-    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    float3 origin_4 = header_2.min_;
-    float3 scale_2 = header_2.max_;
-    const float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    const float _e28 = slab(origin_4, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
-    uint _e30 = F32_INF;
-    if ((_e28 == asfloat(_e30))) {
-        Candidate _e33 = best_2;
-        const Candidate candidate_7 = _e33;
+    GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
+    const BoxRay _e19 = header_box_ray(header_3, ray_12);
+    const float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
+    uint _e29 = F32_INF;
+    if ((_e27 == asfloat(_e29))) {
+        Candidate _e32 = best_2;
+        const Candidate candidate_7 = _e32;
         return candidate_7;
     }
-    const float3 _e34 = node_frame_hi(header_2);
-    const BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_11);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
-            uint _e46 = child_1;
-            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                const Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_11, _e58, shadow_2);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if ((shadow_2 && (_e61 != NO_HIT))) {
-                    Candidate _e65 = best_2;
-                    const Candidate candidate_8 = _e65;
+        uint _e37 = child_1;
+        if (((_e37 & NODE_LEAF_BIT) != 0u)) {
+            uint _e42 = child_1;
+            if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_12, _e54, shadow_2);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if ((shadow_2 && (_e57 != NO_HIT))) {
+                    Candidate _e61 = best_2;
+                    const Candidate candidate_8 = _e61;
                     return candidate_8;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e66)*32+0)), asuint(nodes.Load((base_2 + _e66)*32+12)), asfloat(nodes.Load3((base_2 + _e66)*32+16)), asuint(nodes.Load((base_2 + _e66)*32+28)));
-            float _e72 = best_2.t;
-            const float2 _e73 = children_entry(n_9, _e36, _e72);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e62)*32+0)), asuint(nodes.Load((base_2 + _e62)*32+12)), asfloat(nodes.Load3((base_2 + _e62)*32+16)), asuint(nodes.Load((base_2 + _e62)*32+28)));
+            float _e68 = best_2.t;
+            const float2 _e69 = children_entry(n_9, _e19, _e68);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if (((tl_1 < asfloat(_e77)) && (tr_1 < asfloat(_e81)))) {
+            if (((tl_1 < asfloat(_e73)) && (tr_1 < asfloat(_e77)))) {
                 near_1 = n_9.a;
                 far_1 = n_9.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_9.b;
                     far_1 = n_9.a;
                 }
-                uint _e92 = sp_2;
-                if ((_e92 < TLAS_STACK)) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack[min(uint(min(_e95, 69u)), 69u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                uint _e88 = sp_2;
+                if ((_e88 < TLAS_STACK)) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack[min(uint(min(_e91, 69u)), 69u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if ((tl_1 < asfloat(_e106))) {
+            uint _e102 = F32_INF;
+            if ((tl_1 < asfloat(_e102))) {
                 child_1 = n_9.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((tr_1 < asfloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((tr_1 < asfloat(_e107))) {
                 child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        const uint2 _e117 = pop(0u, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e112 = sp_2;
+        const uint2 _e113 = pop(0u, _e112);
+        if ((_e113.x == NO_HIT)) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    const Candidate candidate_9 = _e123;
+    Candidate _e119 = best_2;
+    const Candidate candidate_9 = _e119;
     return candidate_9;
 }
 
@@ -1433,25 +1418,25 @@ ConstantBackground load_ConstantBackground(uint offset_5)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_7, Ray ray_12)
+float3 constant_background(ConstantBackground b_7, Ray ray_13)
 {
     return b_7.color;
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_13)
+float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_14)
 {
     const ConstantBackground _e2 = load_ConstantBackground(offset_6);
-    const float3 _e3 = constant_background(_e2, ray_13);
+    const float3 _e3 = constant_background(_e2, ray_14);
     return _e3;
 }
 
-float3 miss(Ray ray_14)
+float3 miss(Ray ray_15)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_15);
     return _e9;
 }
 
@@ -1470,9 +1455,9 @@ Lambert load_Lambert(uint offset_7)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_15, Hit hit_1)
+float3 shading_normal(Ray ray_16, Hit hit_1)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1801,8 +1786,8 @@ float3 step_toward(float3 x_3, float3 s_1)
 
 float3 offset_origin(float3 p_5, float3 n_5, float error)
 {
-    float d_5 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
-    float3 offset_16 = (n_5 * (d_5).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    float3 offset_16 = (n_5 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
@@ -1810,7 +1795,7 @@ float3 offset_origin(float3 p_5, float3 n_5, float error)
 Ray shadow_ray(float3 position_6, float3 normal_7, float3 dir_2, float dist_1)
 {
     float3 n_6 = (float3)0;
-    float tmax_5 = (float)0;
+    float tmax_4 = (float)0;
 
     n_6 = normal_7;
     float3 _e5 = n_6;
@@ -1824,18 +1809,18 @@ Ray shadow_ray(float3 position_6, float3 normal_7, float3 dir_2, float dist_1)
     float3 _e22 = n_6;
     const float3 _e23 = offset_origin(position_6, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = asfloat(_e25);
+    tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < asfloat(_e29))) {
         float3 light = (position_6 + (dir_2 * (dist_1).xxx));
-        float dd_1 = dot(dir_2, dir_2);
-        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        float dd = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd);
         float3 l_5 = (abs(position_6) + abs((dir_2 * (dist_1).xxx)));
-        tmax_5 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd)));
     }
-    float _e59 = tmax_5;
-    const Ray ray_27 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_27;
+    float _e59 = tmax_4;
+    const Ray ray_28 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_28;
 }
 
 float shadow_query(float3 position_7, float3 normal_8, float3 dir_3, float dist_2)
@@ -1926,12 +1911,12 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_9)
     return lightsample_15;
 }
 
-float3 lambert_shade(Lambert m, Ray ray_16, Hit hit_2)
+float3 lambert_shade(Lambert m, Ray ray_17, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_5 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_16, hit_2);
+    const float3 _e3 = shading_normal(ray_17, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_5 = 0u;
@@ -1958,18 +1943,18 @@ float3 lambert_shade(Lambert m, Ray ray_16, Hit hit_2)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_17, Hit hit_3, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_18, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_13);
-    const float3 _e4 = lambert_shade(_e3, ray_17, hit_3);
+    const float3 _e4 = lambert_shade(_e3, ray_18, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_18, Candidate c_2)
+float3 shade_direct(Ray ray_19, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_18, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_19, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, (0.0).xxx);
     return _e11;
 }
 
@@ -1977,28 +1962,28 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_19, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_20, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_20, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_21, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_20.medium == 0u)) {
+    if ((ray_21.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_20.medium - 1u)*128+0)), asfloat(instances.Load4((ray_20.medium - 1u)*128+16)), asfloat(instances.Load4((ray_20.medium - 1u)*128+32)), asfloat(instances.Load4((ray_20.medium - 1u)*128+48)), asfloat(instances.Load4((ray_20.medium - 1u)*128+64)), asfloat(instances.Load4((ray_20.medium - 1u)*128+80)), asuint(instances.Load((ray_20.medium - 1u)*128+96)), asuint(instances.Load((ray_20.medium - 1u)*128+100)), asuint(instances.Load((ray_20.medium - 1u)*128+104)), asuint(instances.Load((ray_20.medium - 1u)*128+108)), asuint(instances.Load((ray_20.medium - 1u)*128+112)), asuint(instances.Load((ray_20.medium - 1u)*128+116)), asuint(instances.Load((ray_20.medium - 1u)*128+120)), asuint(instances.Load((ray_20.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_21.medium - 1u)*128+0)), asfloat(instances.Load4((ray_21.medium - 1u)*128+16)), asfloat(instances.Load4((ray_21.medium - 1u)*128+32)), asfloat(instances.Load4((ray_21.medium - 1u)*128+48)), asfloat(instances.Load4((ray_21.medium - 1u)*128+64)), asfloat(instances.Load4((ray_21.medium - 1u)*128+80)), asuint(instances.Load((ray_21.medium - 1u)*128+96)), asuint(instances.Load((ray_21.medium - 1u)*128+100)), asuint(instances.Load((ray_21.medium - 1u)*128+104)), asuint(instances.Load((ray_21.medium - 1u)*128+108)), asuint(instances.Load((ray_21.medium - 1u)*128+112)), asuint(instances.Load((ray_21.medium - 1u)*128+116)), asuint(instances.Load((ray_21.medium - 1u)*128+120)), asuint(instances.Load((ray_21.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_21, Hit hit_4)
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_22, Hit hit_4)
 {
     return;
 }
@@ -2054,7 +2039,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_22 = (Ray)0;
+    Ray ray_23 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -2093,7 +2078,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -2112,10 +2097,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_23;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_23;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -2252,7 +2237,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_10, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = ConstructRay(_e284, 0.0, dir_9, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_23 = ConstructRay(_e284, 0.0, dir_9, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

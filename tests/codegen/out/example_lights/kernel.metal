@@ -452,19 +452,19 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint x_2 = {};
-    uint d_1 = rng_state;
-    rng_state = d_1 + 1u;
+    uint d = rng_state;
+    rng_state = d + 1u;
     uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 24u)];
-    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e16 = pcg_hash(_e10 ^ ((d >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_7 = metal::reverse_bits(_e24);
     x_2 = i_7;
-    if ((d_1 & 1u) != 0u) {
+    if ((d & 1u) != 0u) {
         uint _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
@@ -547,9 +547,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
     return _e25;
 }
@@ -557,19 +557,19 @@ Ray to_object(
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_3);
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_3[metal::min(kz, 2u)];
+    float dz = d_2[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 node_point(
@@ -595,15 +595,24 @@ BoxRay box_ray(
 ) {
     float m_1 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_1) >> 23u) & 255u, 1u), 253u);
-    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
     float unit = as_type<float>(e << 23u);
     metal::float3 floor = metal::float3(0.0000000000009094947);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
-    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_4 * floor, metal::abs(d_4) < floor);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_4 * floor, metal::abs(d_3) < floor);
     metal::float3 rel = origin_1 - ray_2.origin;
     metal::float3 start = rel * inv;
     metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
     return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
+BoxRay header_box_ray(
+    GpuNode header_1,
+    Ray ray_3
+) {
+    metal::float3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
+    return _e7;
 }
 
 metal::float3 hit_triangle(
@@ -650,7 +659,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_3,
+    Ray ray_4,
     Candidate c
 ) {
     return true;
@@ -727,7 +736,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_4,
+    Ray ray_5,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -743,23 +752,22 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_1 = inst_2.blas_root;
-    GpuNode header_1 = nodes[base_1];
-    metal::float3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_4);
+    GpuNode header_2 = nodes[base_1];
+    BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            uint _e27 = child;
-            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e34 = child;
-            uint first = _e34 & NODE_FIRST_MASK;
+        uint _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            uint _e22 = child;
+            uint count_1 = (_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e29 = child;
+            uint first = _e29 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -767,83 +775,83 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = _e80 + 1u;
+                    uint _e75 = k;
+                    k = _e75 + 1u;
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if (_e39 >= count_1) {
+                uint _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = (inst_2.triangle_offset + first) + _e43;
-                float _e47 = best.t;
-                metal::float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
-                uint _e54 = F32_INF;
-                if (_e51.x < as_type<float>(_e54)) {
-                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e63.w);
+                uint _e38 = k;
+                uint prim = (inst_2.triangle_offset + first) + _e38;
+                float _e42 = best.t;
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_6 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
-                    bool _e78 = accept(inst_2, world_ray, c_6);
-                    if (_e78) {
+                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_6);
+                    if (_e73) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_8 = nodes[base_1 + _e83];
-            float _e89 = best.t;
-            metal::float2 _e90 = children_entry(n_8, _e17, _e89, F32_INF);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
+            uint _e78 = child;
+            GpuNode n_8 = nodes[base_1 + _e78];
+            float _e84 = best.t;
+            metal::float2 _e85 = children_entry(n_8, _e12, _e84, F32_INF);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
                 near = n_8.a;
                 far = n_8.b;
                 if ((tr < tl) != shadow) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 69u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = _e121 + 1u;
+                uint _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 69u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = _e116 + 1u;
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tl < as_type<float>(_e126)) {
+            uint _e121 = F32_INF;
+            if (tl < as_type<float>(_e121)) {
                 child = n_8.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if (tr < as_type<float>(_e131)) {
+            uint _e126 = F32_INF;
+            if (tr < as_type<float>(_e126)) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
-        if (_e137.x == NO_HIT) {
+        uint _e131 = sp_1;
+        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Box load_Box(
@@ -862,17 +870,17 @@ Box load_Box(
 
 Intersection box_intersect(
     Box b_6,
-    Ray ray_5,
+    Ray ray_6,
     thread uint& F32_INF
 ) {
     float t = {};
     uint axis = {};
     float sign = {};
     metal::float3 n_1 = {};
-    metal::bool3 tiny = metal::abs(ray_5.dir) < metal::float3(0.000000000000000000000000000001);
-    metal::float3 inv_1 = metal::float3(1.0) / metal::select(ray_5.dir, metal::float3(0.000000000000000000000000000001), tiny);
-    metal::float3 t_lo = (b_6.min - ray_5.origin) * inv_1;
-    metal::float3 t_hi = (b_6.max - ray_5.origin) * inv_1;
+    metal::bool3 tiny = metal::abs(ray_6.dir) < metal::float3(0.000000000000000000000000000001);
+    metal::float3 inv_1 = metal::float3(1.0) / metal::select(ray_6.dir, metal::float3(0.000000000000000000000000000001), tiny);
+    metal::float3 t_lo = (b_6.min - ray_6.origin) * inv_1;
+    metal::float3 t_hi = (b_6.max - ray_6.origin) * inv_1;
     metal::float3 near_3 = metal::min(t_lo, t_hi);
     metal::float3 far_3 = metal::max(t_lo, t_hi);
     float entry = metal::max(metal::max(near_3.x, near_3.y), near_3.z);
@@ -884,14 +892,14 @@ Intersection box_intersect(
     t = entry;
     axis = (entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u);
     sign = -1.0;
-    if (!((entry >= ray_5.tmin))) {
+    if (!((entry >= ray_6.tmin))) {
         t = exit_1;
         axis = (exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u);
         sign = 1.0;
     }
     float _e71 = t;
     float _e74 = t;
-    if (!(((_e71 >= ray_5.tmin) && (_e74 <= ray_5.tmax)))) {
+    if (!(((_e71 >= ray_6.tmin) && (_e74 <= ray_6.tmax)))) {
         uint _e80 = F32_INF;
         return Intersection {as_type<float>(_e80), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
@@ -899,9 +907,9 @@ Intersection box_intersect(
     uint _e91 = axis;
     float _e95 = sign;
     uint _e99 = axis;
-    n_1[metal::min(_e91, 2u)] = _e95 * ((ray_5.dir[metal::min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0);
+    n_1[metal::min(_e91, 2u)] = _e95 * ((ray_6.dir[metal::min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0);
     float _e109 = t;
-    metal::float3 rel_1 = ((ray_5.origin + (ray_5.dir * metal::float3(_e109))) - b_6.min) / metal::max(b_6.max - b_6.min, metal::float3(0.000000000000000000000000000001));
+    metal::float3 rel_1 = ((ray_6.origin + (ray_6.dir * metal::float3(_e109))) - b_6.min) / metal::max(b_6.max - b_6.min, metal::float3(0.000000000000000000000000000001));
     uint _e124 = axis;
     uint _e129 = axis;
     metal::float2 uv = (_e129 == 0u) ? rel_1.zy : ((_e124 == 1u) ? rel_1.xz : rel_1.xy);
@@ -924,14 +932,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_6,
+    Ray ray_7,
     thread uint& F32_INF
 ) {
     float t_1 = {};
-    metal::float3 f_2 = ray_6.origin - s.center;
-    float a_5 = metal::dot(ray_6.dir, ray_6.dir);
-    float b_9 = -(metal::dot(f_2, ray_6.dir));
-    metal::float3 l_4 = f_2 + (ray_6.dir * metal::float3(b_9 / a_5));
+    metal::float3 f_2 = ray_7.origin - s.center;
+    float a_5 = metal::dot(ray_7.dir, ray_7.dir);
+    float b_9 = -(metal::dot(f_2, ray_7.dir));
+    metal::float3 l_4 = f_2 + (ray_7.dir * metal::float3(b_9 / a_5));
     float r2_ = s.radius * s.radius;
     float disc = a_5 * (r2_ - metal::dot(l_4, l_4));
     if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
@@ -943,17 +951,17 @@ Intersection sphere_intersect(
     float t1_1 = q_1 / a_5;
     t_1 = metal::min(t0_1, t1_1);
     float _e52 = t_1;
-    if (!((_e52 >= ray_6.tmin))) {
+    if (!((_e52 >= ray_7.tmin))) {
         t_1 = metal::max(t0_1, t1_1);
     }
     float _e57 = t_1;
     float _e60 = t_1;
-    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
+    if (!(((_e57 >= ray_7.tmin) && (_e60 <= ray_7.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t_1;
-    metal::float3 _e82 = normalize_vec3f((ray_6.origin + (ray_6.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_7.origin + (ray_7.dir * metal::float3(_e76))) - s.center);
     float u_1 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv_1 = metal::float2(u_1, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t_1;
@@ -963,7 +971,7 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
-    Ray ray_7,
+    Ray ray_8,
     device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
@@ -971,12 +979,12 @@ Intersection dispatch_intersection(
     switch(type_id_1) {
         case 0u: {
             Box _e3 = load_Box(offset_4, params, _buffer_sizes);
-            Intersection _e4 = box_intersect(_e3, ray_7, F32_INF);
+            Intersection _e4 = box_intersect(_e3, ray_8, F32_INF);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
-            Intersection _e6 = sphere_intersect(_e5, ray_7, F32_INF);
+            Intersection _e6 = sphere_intersect(_e5, ray_8, F32_INF);
             return _e6;
         }
         default: {
@@ -988,7 +996,7 @@ Intersection dispatch_intersection(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_8,
+    Ray ray_9,
     Candidate best_1,
     bool shadow_1,
     device type_5 const& params,
@@ -1001,12 +1009,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_8);
+    Ray _e7 = to_object(inst_6, ray_9);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_9, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -1016,7 +1024,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_7 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_8, c_7);
+        bool _e40 = accept(inst_6, ray_9, c_7);
         if (_e40) {
             return c_7;
         }
@@ -1099,7 +1107,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_9,
+    Ray ray_10,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -1111,9 +1119,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_9.origin, ray_9.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_10.origin, ray_10.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_9.origin + (ray_9.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_10.origin + (ray_10.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1154,7 +1162,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_9.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_10.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1239,53 +1247,27 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_10 = {};
+    Ray ray_11 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_10.origin;
+    ray_11 = _e7;
+    ray_11.depth = 0u;
+    ray_11.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_11.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
+    ray_11.medium = _e17;
+    Ray _e18 = ray_11;
     return _e18;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
+metal::float3 node_frame_bounds(
 ) {
-    metal::float3 tiny_1 = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_6 * tiny_1, metal::abs(d) < tiny_1);
-    return metal::float3(1.0) / dd;
-}
-
-float slab(
-    metal::float3 lo_1,
-    metal::float3 hi_1,
-    metal::float3 origin_3,
-    metal::float3 inv_dir,
-    float tmin_1,
-    float tmax_4,
-    thread uint& F32_INF
-) {
-    metal::float3 t0_2 = (lo_1 - origin_3) * inv_dir;
-    metal::float3 t1_2 = (hi_1 - origin_3) * inv_dir;
-    metal::float3 near_4 = metal::min(t0_2, t1_2);
-    metal::float3 far_4 = metal::max(t0_2, t1_2);
-    float enter_1 = metal::max(metal::max(near_4.x, near_4.y), metal::max(near_4.z, tmin_1));
-    float exit_2 = metal::min(metal::min(far_4.x, far_4.y) * 1.0000005, metal::min(far_4.z * 1.0000005, tmax_4));
-    if (enter_1 <= exit_2) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    return metal::float3(65535.0);
 }
 
 Candidate intersect_scene(
-    Ray ray_11,
+    Ray ray_12,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1304,97 +1286,93 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_12.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_11.dir);
     uint base_2 = frame_3.tlas_root;
-    GpuNode header_2 = nodes[base_2];
-    metal::float3 origin_4 = header_2.min;
-    metal::float3 scale_2 = header_2.max;
-    metal::float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_11.origin, _e16, ray_11.tmin, _e27, F32_INF);
-    uint _e30 = F32_INF;
-    if (_e28 == as_type<float>(_e30)) {
-        Candidate _e33 = best_2;
-        return _e33;
+    GpuNode header_3 = nodes[base_2];
+    BoxRay _e19 = header_box_ray(header_3, ray_12);
+    metal::float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
+    uint _e29 = F32_INF;
+    if (_e27 == as_type<float>(_e29)) {
+        Candidate _e32 = best_2;
+        return _e32;
     }
-    metal::float3 _e34 = node_frame_hi(header_2);
-    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_11);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            uint _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_11, _e58, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    Candidate _e65 = best_2;
-                    return _e65;
+        uint _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            uint _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_12, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    Candidate _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_9 = nodes[base_2 + _e66];
-            float _e72 = best_2.t;
-            metal::float2 _e73 = children_entry(n_9, _e36, _e72, F32_INF);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_9 = nodes[base_2 + _e62];
+            float _e68 = best_2.t;
+            metal::float2 _e69 = children_entry(n_9, _e19, _e68, F32_INF);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
+            if ((tl_1 < as_type<float>(_e73)) && (tr_1 < as_type<float>(_e77))) {
                 near_1 = n_9.a;
                 far_1 = n_9.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_9.b;
                     far_1 = n_9.a;
                 }
-                uint _e92 = sp_2;
-                if (_e92 < TLAS_STACK) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack.inner[metal::min(_e95, 69u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = _e101 + 1u;
+                uint _e88 = sp_2;
+                if (_e88 < TLAS_STACK) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack.inner[metal::min(_e91, 69u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = _e97 + 1u;
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if (tl_1 < as_type<float>(_e106)) {
+            uint _e102 = F32_INF;
+            if (tl_1 < as_type<float>(_e102)) {
                 child_1 = n_9.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if (tr_1 < as_type<float>(_e111)) {
+            uint _e107 = F32_INF;
+            if (tr_1 < as_type<float>(_e107)) {
                 child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e112 = sp_2;
+        metal::uint2 _e113 = pop(0u, _e112, traversal_stack);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    return _e123;
+    Candidate _e119 = best_2;
+    return _e119;
 }
 
 ConstantBackground load_ConstantBackground(
@@ -1410,7 +1388,7 @@ ConstantBackground load_ConstantBackground(
 
 metal::float3 constant_background(
     ConstantBackground b_7,
-    Ray ray_12
+    Ray ray_13
 ) {
     return b_7.color;
 }
@@ -1418,17 +1396,17 @@ metal::float3 constant_background(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_13,
+    Ray ray_14,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = constant_background(_e2, ray_13);
+    metal::float3 _e3 = constant_background(_e2, ray_14);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_14,
+    Ray ray_15,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1437,7 +1415,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_15, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1453,10 +1431,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1784,8 +1762,8 @@ metal::float3 offset_origin(
     metal::float3 n_5,
     float error
 ) {
-    float d_5 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
-    metal::float3 offset_16 = n_5 * metal::float3(d_5);
+    float d_4 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
+    metal::float3 offset_16 = n_5 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
     return _e17;
 }
@@ -1799,7 +1777,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_6 = {};
-    float tmax_5 = {};
+    float tmax_4 = {};
     n_6 = normal_7;
     metal::float3 _e5 = n_6;
     if (metal::dot(dir_2, _e5) < 0.0) {
@@ -1812,16 +1790,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_6;
     metal::float3 _e23 = offset_origin(position_6, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = as_type<float>(_e25);
+    tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist_1 < as_type<float>(_e29)) {
         metal::float3 light = position_6 + (dir_2 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_2, dir_2);
-        float along_2 = metal::dot(light - _e23, dir_2) / dd_1;
+        float dd = metal::dot(dir_2, dir_2);
+        float along_2 = metal::dot(light - _e23, dir_2) / dd;
         metal::float3 l_5 = metal::abs(position_6) + metal::abs(dir_2 * metal::float3(dist_1));
-        tmax_5 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_5.x, l_5.y), l_5.z)) / metal::sqrt(dd_1));
+        tmax_4 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_5.x, l_5.y), l_5.z)) / metal::sqrt(dd));
     }
-    float _e59 = tmax_5;
+    float _e59 = tmax_4;
     return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -1941,7 +1919,7 @@ LightSample sample_light_deferred(
 
 metal::float3 lambert_shade(
     Lambert m,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1959,7 +1937,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e3 = shading_normal(ray_16, hit_2);
+    metal::float3 _e3 = shading_normal(ray_17, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_5 = 0u;
@@ -1989,7 +1967,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_13,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -2007,12 +1985,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_13, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_17, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_18, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_18,
+    Ray ray_19,
     Candidate c_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2030,15 +2008,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_14,
-    Ray ray_19,
+    Ray ray_20,
     float t_2,
     metal::float3 radiance
 ) {
@@ -2046,7 +2024,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_20,
+    Ray ray_21,
     float t_3,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2055,21 +2033,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_20.medium == 0u) {
+    if (ray_21.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_20.medium - 1u];
+    GpuInstance inst_9 = instances[ray_21.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_4
 ) {
     return;
@@ -2126,7 +2104,7 @@ metal::float3 trace(
     float t_4 = {};
     type_20 stack = {};
     uint depth = {};
-    Ray ray_22 = {};
+    Ray ray_23 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2164,7 +2142,7 @@ metal::float3 trace(
     }
     stack = type_20 {};
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2183,10 +2161,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_23;
             Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_23;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2323,7 +2301,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_23 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

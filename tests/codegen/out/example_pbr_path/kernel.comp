@@ -387,19 +387,19 @@ uint sobol_second_reversed(uint i) {
 
 float rand_next() {
     uint x_2 = 0u;
-    uint d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    uint d = rng_state;
+    rng_state = (d + 1u);
     uint _e10 = scratch[min(SCRATCH_RNG_SEED, 24u)];
-    uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
     uint i_8 = bitfieldReverse(_e24);
     x_2 = i_8;
-    if (((d_1 & 1u) != 0u)) {
+    if (((d & 1u) != 0u)) {
         uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
-    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
@@ -451,27 +451,27 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o = vec4(ray.origin, 1.0);
-    vec4 d_2 = vec4(ray.dir, 0.0);
+    vec4 d_1 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
     return _e25;
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_3);
+    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_2);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(kz, 2u)];
+    float dz = d_2[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
@@ -486,15 +486,21 @@ vec3 node_frame_hi(GpuNode header) {
 BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     float m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_6) >> 23u) & 255u), 1u), 253u);
-    vec3 d_4 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
+    vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
     float unit = uintBitsToFloat((e << 23u));
     vec3 floor_ = vec3(9.094947e-13);
-    vec3 s_6 = mix(vec3(1.0), vec3(-1.0), lessThan(d_4, vec3(0.0)));
-    vec3 inv = (vec3(1.0) / mix(d_4, (s_6 * floor_), lessThan(abs(d_4), floor_)));
+    vec3 s_6 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
+    vec3 inv = (vec3(1.0) / mix(d_3, (s_6 * floor_), lessThan(abs(d_3), floor_)));
     vec3 rel = (origin_1 - ray_2.origin);
     vec3 start = (rel * inv);
     vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_6);
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
+BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
+    vec3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
+    return _e7;
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -530,7 +536,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_13 ? vec3(t_4, (v_6 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_4, Candidate c) {
     return true;
 }
 
@@ -582,7 +588,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -590,101 +596,100 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_5 = inst_2.blas_root;
-    GpuNode header_1 = _group_0_binding_2_cs[base_5];
-    vec3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
+    GpuNode header_2 = _group_0_binding_2_cs[base_5];
+    BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     while(true) {
-        uint _e22 = child;
-        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
-            uint _e27 = child;
-            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e34 = child;
-            uint first = (_e34 & NODE_FIRST_MASK);
+        uint _e17 = child;
+        if (((_e17 & NODE_LEAF_BIT) != 0u)) {
+            uint _e22 = child;
+            uint count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e29 = child;
+            uint first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = (_e80 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if ((_e39 >= count_1)) {
+                uint _e34 = k;
+                if ((_e34 >= count_1)) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e43);
-                float _e47 = best.t;
-                vec3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                uint _e54 = F32_INF;
-                if ((_e51.x < uintBitsToFloat(_e54))) {
-                    vec4 _e63 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
-                    uint tag = floatBitsToUint(_e63.w);
+                uint _e38 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e38);
+                float _e42 = best.t;
+                vec3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                uint _e49 = F32_INF;
+                if ((_e46.x < uintBitsToFloat(_e49))) {
+                    vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_9 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0.0));
-                    bool _e78 = accept(inst_2, world_ray, c_9);
-                    if (_e78) {
+                    Candidate c_9 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_2, world_ray, c_9);
+                    if (_e73) {
                         best = c_9;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_11 = _group_0_binding_2_cs[(base_5 + _e83)];
-            float _e89 = best.t;
-            vec2 _e90 = children_entry(n_11, _e17, _e89);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((tl < uintBitsToFloat(_e94)) && (tr < uintBitsToFloat(_e98)))) {
+            uint _e78 = child;
+            GpuNode n_11 = _group_0_binding_2_cs[(base_5 + _e78)];
+            float _e84 = best.t;
+            vec2 _e85 = children_entry(n_11, _e12, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < uintBitsToFloat(_e89)) && (tr < uintBitsToFloat(_e93)))) {
                 near = n_11.a;
                 far = n_11.b;
                 if (((tr < tl) != shadow)) {
                     near = n_11.b;
                     far = n_11.a;
                 }
-                uint _e110 = sp_1;
-                if ((_e110 < BLAS_STACK)) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack[min((TLAS_STACK + _e114), 71u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 71u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tl < uintBitsToFloat(_e126))) {
+            uint _e121 = F32_INF;
+            if ((tl < uintBitsToFloat(_e121))) {
                 child = n_11.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if ((tr < uintBitsToFloat(_e131))) {
+            uint _e126 = F32_INF;
+            if ((tr < uintBitsToFloat(_e126))) {
                 child = n_11.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        uvec2 _e137 = pop(TLAS_STACK, _e136);
-        if ((_e137.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        uvec2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Sphere load_Sphere(uint offset_2) {
@@ -695,12 +700,12 @@ Sphere load_Sphere(uint offset_2) {
     return Sphere(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24));
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_5) {
+Intersection sphere_intersect(Sphere s, Ray ray_6) {
     float t = 0.0;
-    vec3 f_1 = (ray_5.origin - s.center);
-    float a_5 = dot(ray_5.dir, ray_5.dir);
-    float b_8 = -(dot(f_1, ray_5.dir));
-    vec3 l_6 = (f_1 + (ray_5.dir * vec3((b_8 / a_5))));
+    vec3 f_1 = (ray_6.origin - s.center);
+    float a_5 = dot(ray_6.dir, ray_6.dir);
+    float b_8 = -(dot(f_1, ray_6.dir));
+    vec3 l_6 = (f_1 + (ray_6.dir * vec3((b_8 / a_5))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -712,38 +717,38 @@ Intersection sphere_intersect(Sphere s, Ray ray_5) {
     float t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     float _e52 = t;
-    if (!((_e52 >= ray_5.tmin))) {
+    if (!((_e52 >= ray_6.tmin))) {
         t = max(t0_1, t1_2);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
+    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float _e76 = t;
-    vec3 _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * vec3(_e76))) - s.center));
+    vec3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * vec3(_e76))) - s.center));
     float u_4 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv = vec2(u_4, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
     return Intersection(_e109, _e82, uv);
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_6) {
+Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_7) {
     Sphere _e2 = load_Sphere(offset_3);
-    Intersection _e3 = sphere_intersect(_e2, ray_6);
+    Intersection _e3 = sphere_intersect(_e2, ray_7);
     return _e3;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_6, ray_7);
+    Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -753,7 +758,7 @@ Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
         Candidate c_10 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        bool _e40 = accept(inst_6, ray_7, c_10);
+        bool _e40 = accept(inst_6, ray_8, c_10);
         if (_e40) {
             return c_10;
         }
@@ -814,14 +819,14 @@ vec3 normal_to_world(GpuInstance inst_5, vec3 n_2) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_8, Candidate c_1) {
+Hit finish_hit(Ray ray_9, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_8.origin, (ray_8.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_9.origin, (ray_9.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_8.origin + (ray_8.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -862,7 +867,7 @@ Hit finish_hit(Ray ray_8, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_8.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -915,42 +920,25 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_9 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_10 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_9 = _e7;
-    ray_9.depth = 0u;
-    ray_9.kind = RAY_CAMERA;
-    vec3 _e15 = ray_9.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    vec3 _e15 = ray_10.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_9.medium = _e17;
-    Ray _e18 = ray_9;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
     return _e18;
 }
 
-vec3 safe_inverse(vec3 d) {
-    vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_8 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_8 * tiny), lessThan(abs(d), tiny));
-    return (vec3(1.0) / dd);
+vec3 node_frame_bounds() {
+    return vec3(65535.0);
 }
 
-float slab(vec3 lo_1, vec3 hi_1, vec3 origin_3, vec3 inv_dir, float tmin_1, float tmax_4) {
-    vec3 t0_2 = ((lo_1 - origin_3) * inv_dir);
-    vec3 t1_3 = ((hi_1 - origin_3) * inv_dir);
-    vec3 near_3 = min(t0_2, t1_3);
-    vec3 far_3 = max(t0_2, t1_3);
-    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
-    if ((enter_1 <= exit_1)) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return uintBitsToFloat(_e30);
-}
-
-Candidate intersect_scene(Ray ray_10, bool shadow_2) {
+Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -958,94 +946,90 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_10.dir);
     uint base_6 = frame_3.tlas_root;
-    GpuNode header_2 = _group_0_binding_2_cs[base_6];
-    vec3 origin_4 = header_2.min_;
-    vec3 scale_2 = header_2.max_;
-    vec3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
-    uint _e30 = F32_INF;
-    if ((_e28 == uintBitsToFloat(_e30))) {
-        Candidate _e33 = best_2;
-        return _e33;
+    GpuNode header_3 = _group_0_binding_2_cs[base_6];
+    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    vec3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
+    uint _e29 = F32_INF;
+    if ((_e27 == uintBitsToFloat(_e29))) {
+        Candidate _e32 = best_2;
+        return _e32;
     }
-    vec3 _e34 = node_frame_hi(header_2);
-    BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_10);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     while(true) {
-        uint _e41 = child_1;
-        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
-            uint _e46 = child_1;
-            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_10, _e58, shadow_2);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if ((shadow_2 && (_e61 != NO_HIT))) {
-                    Candidate _e65 = best_2;
-                    return _e65;
+        uint _e37 = child_1;
+        if (((_e37 & NODE_LEAF_BIT) != 0u)) {
+            uint _e42 = child_1;
+            if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if ((shadow_2 && (_e57 != NO_HIT))) {
+                    Candidate _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_12 = _group_0_binding_2_cs[(base_6 + _e66)];
-            float _e72 = best_2.t;
-            vec2 _e73 = children_entry(n_12, _e36, _e72);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_12 = _group_0_binding_2_cs[(base_6 + _e62)];
+            float _e68 = best_2.t;
+            vec2 _e69 = children_entry(n_12, _e19, _e68);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if (((tl_1 < uintBitsToFloat(_e77)) && (tr_1 < uintBitsToFloat(_e81)))) {
+            if (((tl_1 < uintBitsToFloat(_e73)) && (tr_1 < uintBitsToFloat(_e77)))) {
                 near_1 = n_12.a;
                 far_1 = n_12.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_12.b;
                     far_1 = n_12.a;
                 }
-                uint _e92 = sp_2;
-                if ((_e92 < TLAS_STACK)) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack[min(_e95, 71u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                uint _e88 = sp_2;
+                if ((_e88 < TLAS_STACK)) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack[min(_e91, 71u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if ((tl_1 < uintBitsToFloat(_e106))) {
+            uint _e102 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e102))) {
                 child_1 = n_12.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((tr_1 < uintBitsToFloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e107))) {
                 child_1 = n_12.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        uvec2 _e117 = pop(0u, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e112 = sp_2;
+        uvec2 _e113 = pop(0u, _e112);
+        if ((_e113.x == NO_HIT)) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    return _e123;
+    Candidate _e119 = best_2;
+    return _e119;
 }
 
 ConstantBackground load_ConstantBackground(uint offset_4) {
@@ -1055,22 +1039,22 @@ ConstantBackground load_ConstantBackground(uint offset_4) {
     return ConstantBackground(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 constant_background(ConstantBackground b_6, Ray ray_11) {
+vec3 constant_background(ConstantBackground b_6, Ray ray_12) {
     return b_6.color;
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5);
-    vec3 _e3 = constant_background(_e2, ray_12);
+    vec3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
-vec3 miss(Ray ray_13) {
+vec3 miss(Ray ray_14) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
     return _e9;
 }
 
@@ -1252,15 +1236,15 @@ vec3 step_toward(vec3 x_3, vec3 s_1) {
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
-    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    vec3 offset_16 = (n_4 * vec3(d_5));
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_16 = (n_4 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position_4, vec3 normal_5, vec3 dir_2, float dist_1) {
     vec3 n_5 = vec3(0.0);
-    float tmax_5 = 0.0;
+    float tmax_4 = 0.0;
     n_5 = normal_5;
     vec3 _e5 = n_5;
     if ((dot(dir_2, _e5) < 0.0)) {
@@ -1273,16 +1257,16 @@ Ray shadow_ray(vec3 position_4, vec3 normal_5, vec3 dir_2, float dist_1) {
     vec3 _e22 = n_5;
     vec3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = uintBitsToFloat(_e25);
+    tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < uintBitsToFloat(_e29))) {
         vec3 light = (position_4 + (dir_2 * vec3(dist_1)));
-        float dd_1 = dot(dir_2, dir_2);
-        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        float dd = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd);
         vec3 l_7 = (abs(position_4) + abs((dir_2 * vec3(dist_1))));
-        tmax_5 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd)));
     }
-    float _e59 = tmax_5;
+    float _e59 = tmax_4;
     return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
@@ -1392,11 +1376,11 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf) {
     return _e8;
 }
 
-vec3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, vec3 secondary) {
+vec3 path_diffuse_shade(PathDiffuse m, Ray ray_15, Hit hit_1, vec3 secondary) {
     vec3 direct = vec3(0.0);
     uint i_6 = 0u;
-    vec3 n_13 = faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
+    vec3 n_13 = faceforward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     direct = vec3(0.0);
     uint _e16 = light_count_query();
     i_6 = 0u;
@@ -1431,31 +1415,31 @@ QuadLamp load_QuadLamp(uint offset_10) {
     return QuadLamp(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30));
 }
 
-bool after_nee_bounce(Ray ray_15) {
-    return (dot(ray_15.dir, ray_15.dir) > 2.0);
+bool after_nee_bounce(Ray ray_16) {
+    return (dot(ray_16.dir, ray_16.dir) > 2.0);
 }
 
-float bounce_pdf(Ray ray_16) {
-    float x_6 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
+float bounce_pdf(Ray ray_17) {
+    float x_6 = (length(ray_17.dir) - MIS_BOUNCE_LENGTH);
     if (!((x_6 > -0.25))) {
         return 0.0;
     }
     return (exp((max(x_6, 0.0) * 90.0)) - 1.0);
 }
 
-vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2) {
+vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_18, Hit hit_2) {
     if (!(hit_2.front_face)) {
         return vec3(0.0);
     }
     vec3 le = (m_1.color * vec3(m_1.intensity));
-    bool _e11 = after_nee_bounce(ray_17);
+    bool _e11 = after_nee_bounce(ray_18);
     if (!(_e11)) {
         return le;
     }
-    float _e13 = bounce_pdf(ray_17);
-    float len = length(ray_17.dir);
+    float _e13 = bounce_pdf(ray_18);
+    float len = length(ray_18.dir);
     float dist_5 = (hit_2.t * len);
-    float cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
+    float cos_l = (abs(dot(hit_2.geometric_normal, ray_18.dir)) / len);
     float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     float _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
@@ -1470,19 +1454,19 @@ SphereLamp load_SphereLamp(uint offset_11) {
     return SphereLamp(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30));
 }
 
-vec3 sphere_lamp_shade(SphereLamp m_2, Ray ray_18, Hit hit_3) {
+vec3 sphere_lamp_shade(SphereLamp m_2, Ray ray_19, Hit hit_3) {
     if (!(hit_3.front_face)) {
         return vec3(0.0);
     }
     float r2_3 = max((m_2.radius * m_2.radius), 1e-20);
     vec3 le_1 = (m_2.color * vec3(((m_2.intensity * INV_PI) / r2_3)));
-    bool _e19 = after_nee_bounce(ray_18);
+    bool _e19 = after_nee_bounce(ray_19);
     if (!(_e19)) {
         return le_1;
     }
-    float _e21 = bounce_pdf(ray_18);
+    float _e21 = bounce_pdf(ray_19);
     vec3 center = (hit_3.position - (hit_3.normal * vec3(m_2.radius)));
-    vec3 to_center_1 = (center - ray_18.origin);
+    vec3 to_center_1 = (center - ray_19.origin);
     float s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     float one_minus_cos_max_1 = (s2_1 / (1.0 + sqrt((1.0 - s2_1))));
     float pl_1 = (1.0 / max((TAU * one_minus_cos_max_1), 1e-30));
@@ -1503,14 +1487,14 @@ PathPbr load_PathPbr(uint offset_12) {
     return PathPbr(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30), vec3(uintBitsToFloat(_e36), uintBitsToFloat(_e42), uintBitsToFloat(_e48)), _e55);
 }
 
-vec3 path_pbr_ng(Ray ray_19, Hit hit_4) {
-    return faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
+vec3 path_pbr_ng(Ray ray_20, Hit hit_4) {
+    return faceforward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
 }
 
-vec3 path_pbr_n(Ray ray_20, Hit hit_5) {
-    vec3 _e2 = path_pbr_ng(ray_20, hit_5);
+vec3 path_pbr_n(Ray ray_21, Hit hit_5) {
+    vec3 _e2 = path_pbr_ng(ray_21, hit_5);
     vec3 n_14 = faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return ((dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2);
+    return ((dot(n_14, ray_21.dir) < 0.0) ? n_14 : _e2);
 }
 
 float pbr_alpha2_(float roughness) {
@@ -1525,8 +1509,8 @@ vec3 pbr_fresnel(vec3 f0_, float c_2) {
 }
 
 float pbr_ggx_d(float ndh, float a2_) {
-    float d_6 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_6 * d_6));
+    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1) {
@@ -1589,15 +1573,15 @@ float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
-vec3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, vec3 secondary_1) {
+vec3 path_pbr_shade(PathPbr m_3, Ray ray_22, Hit hit_6, vec3 secondary_1) {
     vec3 direct_1 = vec3(0.0);
     uint i_7 = 0u;
     float w = 0.0;
-    vec3 _e4 = path_pbr_n(ray_21, hit_6);
-    vec3 _e6 = normalize_vec3f(ray_21.dir);
+    vec3 _e4 = path_pbr_n(ray_22, hit_6);
+    vec3 _e6 = normalize_vec3f(ray_22.dir);
     vec3 v_7 = -(_e6);
     direct_1 = vec3(0.0);
-    vec3 _e11 = path_pbr_ng(ray_21, hit_6);
+    vec3 _e11 = path_pbr_ng(ray_22, hit_6);
     uint _e13 = light_count_query();
     i_7 = 0u;
     bool loop_init_3 = true;
@@ -1630,26 +1614,26 @@ vec3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, vec3 secondary_1) {
     return ((m_3.emissive + _e53) + secondary_1);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7, vec3 secondary_2) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_23, Hit hit_7, vec3 secondary_2) {
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13);
-            vec3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
+            vec3 _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             QuadLamp _e7 = load_QuadLamp(offset_13);
-            vec3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
+            vec3 _e8 = quad_lamp_shade(_e7, ray_23, hit_7);
             return _e8;
         }
         case 2u: {
             SphereLamp _e9 = load_SphereLamp(offset_13);
-            vec3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
+            vec3 _e10 = sphere_lamp_shade(_e9, ray_23, hit_7);
             return _e10;
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13);
-            vec3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
+            vec3 _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -1659,34 +1643,34 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_23, Candidate c_4) {
+vec3 shade_direct(Ray ray_24, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_23, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_24, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_24, float t_1, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_25, float t_1, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_25, float t_2, vec3 radiance_1) {
+vec3 through_medium(Ray ray_26, float t_2, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_25.medium == 0u)) {
+    if ((ray_26.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_25.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_26.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
     return _e21;
 }
 
-PathState start_path(Ray ray_26) {
-    return PathState(ray_26, vec3(1.0), vec3(0.0), true);
+PathState start_path(Ray ray_27) {
+    return PathState(ray_27, vec3(1.0), vec3(0.0), true);
 }
 
 vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
@@ -1711,14 +1695,14 @@ void rt_spawn(vec3 dir_5, vec3 weight) {
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8) {
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_28, Hit hit_8) {
     vec3 weight_1 = vec3(0.0);
     vec3 ng_1 = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
     vec3 n_15 = faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_27.depth >= m_4.roulette_depth)) {
+    if ((ray_28.depth >= m_4.roulette_depth)) {
         float q_4 = clamp(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)), 0.0, 1.0);
         float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -1747,8 +1731,8 @@ vec3 pbr_sample_vndf(vec3 ve, float alpha, vec2 u_1) {
     float r_5 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
     float p1_ = (r_5 * cos(phi_2));
-    float s_9 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_9) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_9 * r_5) * sin(phi_2)));
+    float s_8 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_5) * sin(phi_2)));
     vec3 _e59 = t1_;
     vec3 nh = (((_e59 * vec3(p1_)) + (t2_ * vec3(p2_))) + (_e9 * vec3(sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0)))));
     vec3 _e84 = normalize_vec3f(vec3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
@@ -1786,11 +1770,11 @@ PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9,
     return PbrSample(_e46, weight_5, _e33);
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9) {
+void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9) {
     vec3 weight_2 = vec3(0.0);
-    vec3 _e3 = path_pbr_ng(ray_28, hit_9);
-    vec3 _e4 = path_pbr_n(ray_28, hit_9);
-    vec3 _e6 = normalize_vec3f(ray_28.dir);
+    vec3 _e3 = path_pbr_ng(ray_29, hit_9);
+    vec3 _e4 = path_pbr_n(ray_29, hit_9);
+    vec3 _e6 = normalize_vec3f(ray_29.dir);
     vec3 v_8 = -(_e6);
     float _e11 = rand_next();
     vec2 _e12 = rand2_next();
@@ -1799,7 +1783,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9) {
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_28.depth >= m_5.roulette_depth)) {
+    if ((ray_29.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -1817,16 +1801,16 @@ void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9) {
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_29, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_30, Hit hit_10) {
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_29, hit_10);
+            path_diffuse_rays(_e4, ray_30, hit_10);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_29, hit_10);
+            path_pbr_rays(_e5, ray_30, hit_10);
             return;
         }
         default: {
@@ -1860,25 +1844,25 @@ PathState path_step(PathState s_2, Candidate c_5) {
     vec3 dir_8 = vec3(0.0);
     vec3 weight_3 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_30 = s_2.ray;
+    Ray ray_31 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_30);
+        vec3 _e14 = miss(ray_31);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
     GpuInstance inst_10 = _group_0_binding_3_cs[c_5.slot];
-    Hit _e22 = finish_hit(ray_30, c_5);
+    Hit _e22 = finish_hit(ray_31, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = vec3(0.0);
     weight_3 = vec3(0.0);
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_30.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_31.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_31, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1888,7 +1872,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
             weight_3 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_31, _e22, vec3(0.0));
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1905,7 +1889,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_30.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_31.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1921,7 +1905,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_30.depth + 1u), RAY_SECONDARY, ray_30.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_31.depth + 1u), RAY_SECONDARY, ray_31.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;

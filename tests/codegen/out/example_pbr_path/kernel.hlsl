@@ -480,19 +480,19 @@ float rand_next()
 {
     uint x_2 = (uint)0;
 
-    uint d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    uint d = rng_state;
+    rng_state = (d + 1u);
     uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 24u)), 24u)];
-    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    const uint _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_8 = reversebits(_e24);
     x_2 = i_8;
-    if (((d_1 & 1u) != 0u)) {
+    if (((d & 1u) != 0u)) {
         const uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
-    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     uint _e45 = x_2;
     const uint _e46 = laine_karras(_e45, scramble);
     return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
@@ -543,16 +543,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_30 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_30;
+    const Ray ray_31 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_31;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_31 = _e4;
-    return ray_31;
+    const Ray ray_32 = _e4;
+    return ray_32;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -577,12 +577,12 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_2 = float4(ray.dir, 0.0);
+    float4 d_1 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_32 = _e25;
-    return ray_32;
+    const Ray ray_33 = _e25;
+    return ray_33;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -598,19 +598,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_3);
+    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_2);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -639,16 +639,24 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
 {
     float m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_6) >> 23u) & 255u), 1u), 253u);
-    float3 d_4 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
+    float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
     float unit = asfloat((e << 23u));
     float3 floor_ = (9.094947e-13).xxx;
-    float3 s_6 = ((d_4 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 inv = ((1.0).xxx / ((abs(d_4) < floor_) ? (s_6 * floor_) : d_4));
+    float3 s_6 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_6 * floor_) : d_3));
     float3 rel = (origin_1 - ray_2.origin);
     float3 start = (rel * inv);
     float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_6);
     const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
+}
+
+BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
+{
+    const float3 _e4 = node_frame_hi(header_1);
+    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
+    const BoxRay boxray_1 = _e7;
+    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -685,7 +693,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_13 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
 {
     return true;
 }
@@ -752,7 +760,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -762,23 +770,22 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_5 = inst_2.blas_root;
-    GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_5*32+0)), asuint(nodes.Load(base_5*32+12)), asfloat(nodes.Load3(base_5*32+16)), asuint(nodes.Load(base_5*32+28)));
-    const float3 _e14 = node_frame_hi(header_1);
-    const BoxRay _e17 = box_ray(header_1.min_, header_1.max_, (_e14 - header_1.min_), ray_4);
+    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_5*32+0)), asuint(nodes.Load(base_5*32+12)), asfloat(nodes.Load3(base_5*32+16)), asuint(nodes.Load(base_5*32+28)));
+    const BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if (((_e22 & NODE_LEAF_BIT) != 0u)) {
-            uint _e27 = child;
-            uint count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            uint _e34 = child;
-            uint first = (_e34 & NODE_FIRST_MASK);
+        uint _e17 = child;
+        if (((_e17 & NODE_LEAF_BIT) != 0u)) {
+            uint _e22 = child;
+            uint count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint _e29 = child;
+            uint first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -786,84 +793,84 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = (_e80 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if ((_e39 >= count_1)) {
+                uint _e34 = k;
+                if ((_e34 >= count_1)) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = ((inst_2.triangle_offset + first) + _e43);
-                float _e47 = best.t;
-                const float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                uint _e54 = F32_INF;
-                if ((_e51.x < asfloat(_e54))) {
-                    float4 _e63 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
-                    uint tag = asuint(_e63.w);
+                uint _e38 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e38);
+                float _e42 = best.t;
+                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                uint _e49 = F32_INF;
+                if ((_e46.x < asfloat(_e49))) {
+                    float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_9 = ConstructCandidate(_e51.x, owner, prim, _e51.yz, (0.0).xxx);
-                    const bool _e78 = accept(inst_2, world_ray, c_9);
-                    if (_e78) {
+                    Candidate c_9 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_9);
+                    if (_e73) {
                         best = c_9;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            const Candidate candidate_1 = _e79;
+                            Candidate _e74 = best;
+                            const Candidate candidate_1 = _e74;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_11 = ConstructGpuNode(asfloat(nodes.Load3((base_5 + _e83)*32+0)), asuint(nodes.Load((base_5 + _e83)*32+12)), asfloat(nodes.Load3((base_5 + _e83)*32+16)), asuint(nodes.Load((base_5 + _e83)*32+28)));
-            float _e89 = best.t;
-            const float2 _e90 = children_entry(n_11, _e17, _e89);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((tl < asfloat(_e94)) && (tr < asfloat(_e98)))) {
+            uint _e78 = child;
+            GpuNode n_11 = ConstructGpuNode(asfloat(nodes.Load3((base_5 + _e78)*32+0)), asuint(nodes.Load((base_5 + _e78)*32+12)), asfloat(nodes.Load3((base_5 + _e78)*32+16)), asuint(nodes.Load((base_5 + _e78)*32+28)));
+            float _e84 = best.t;
+            const float2 _e85 = children_entry(n_11, _e12, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < asfloat(_e89)) && (tr < asfloat(_e93)))) {
                 near = n_11.a;
                 far = n_11.b;
                 if (((tr < tl) != shadow)) {
                     near = n_11.b;
                     far = n_11.a;
                 }
-                uint _e110 = sp_1;
-                if ((_e110 < BLAS_STACK)) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e114), 71u)), 71u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e109), 71u)), 71u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if ((tl < asfloat(_e126))) {
+            uint _e121 = F32_INF;
+            if ((tl < asfloat(_e121))) {
                 child = n_11.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if ((tr < asfloat(_e131))) {
+            uint _e126 = F32_INF;
+            if ((tr < asfloat(_e126))) {
                 child = n_11.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        const uint2 _e137 = pop(TLAS_STACK, _e136);
-        if ((_e137.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        const uint2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    const Candidate candidate_2 = _e143;
+    Candidate _e138 = best;
+    const Candidate candidate_2 = _e138;
     return candidate_2;
 }
 
@@ -896,14 +903,14 @@ float2 ZeroValuefloat2() {
     return (float2)0;
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_5)
+Intersection sphere_intersect(Sphere s, Ray ray_6)
 {
     float t = (float)0;
 
-    float3 f_1 = (ray_5.origin - s.center_);
-    float a_5 = dot(ray_5.dir, ray_5.dir);
-    float b_8 = -(dot(f_1, ray_5.dir));
-    float3 l_6 = (f_1 + (ray_5.dir * ((b_8 / a_5)).xxx));
+    float3 f_1 = (ray_6.origin - s.center_);
+    float a_5 = dot(ray_6.dir, ray_6.dir);
+    float b_8 = -(dot(f_1, ray_6.dir));
+    float3 l_6 = (f_1 + (ray_6.dir * ((b_8 / a_5)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -916,18 +923,18 @@ Intersection sphere_intersect(Sphere s, Ray ray_5)
     float t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     float _e52 = t;
-    if (!((_e52 >= ray_5.tmin))) {
+    if (!((_e52 >= ray_6.tmin))) {
         t = max(t0_1, t1_2);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
+    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_1 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_1;
     }
     float _e76 = t;
-    const float3 _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * (_e76).xxx)) - s.center_));
+    const float3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * (_e76).xxx)) - s.center_));
     float u_4 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv = float2(u_4, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
@@ -935,10 +942,10 @@ Intersection sphere_intersect(Sphere s, Ray ray_5)
     return intersection_2;
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_6)
+Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_7)
 {
     const Sphere _e2 = load_Sphere(offset_3);
-    const Intersection _e3 = sphere_intersect(_e2, ray_6);
+    const Intersection _e3 = sphere_intersect(_e2, ray_7);
     const Intersection intersection_3 = _e3;
     return intersection_3;
 }
@@ -962,17 +969,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_7);
+    const Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -983,7 +990,7 @@ Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
         Candidate c_10 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_7, c_10);
+        const bool _e40 = accept(inst_6, ray_8, c_10);
         if (_e40) {
             const Candidate candidate_4 = c_10;
             return candidate_4;
@@ -1075,16 +1082,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_8, Candidate c_1)
+Hit finish_hit(Ray ray_9, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_8.origin, (ray_8.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_9.origin, (ray_9.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_8.origin + (ray_8.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_9.origin + (ray_9.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -1128,7 +1135,7 @@ Hit finish_hit(Ray ray_8, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_8.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_14 = _e151;
     return hit_14;
@@ -1188,46 +1195,28 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_9 = (Ray)0;
+    Ray ray_10 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_9 = _e7;
-    ray_9.depth = 0u;
-    ray_9.kind = RAY_CAMERA;
-    float3 _e15 = ray_9.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    float3 _e15 = ray_10.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_9.medium = _e17;
-    Ray _e18 = ray_9;
-    const Ray ray_33 = _e18;
-    return ray_33;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
+    const Ray ray_34 = _e18;
+    return ray_34;
 }
 
-float3 safe_inverse(float3 d)
+float3 node_frame_bounds()
 {
-    float3 tiny = (1.1754944e-38).xxx;
-    float3 s_8 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_8 * tiny) : d);
-    return ((1.0).xxx / dd);
+    return (65535.0).xxx;
 }
 
-float slab(float3 lo_1, float3 hi_1, float3 origin_3, float3 inv_dir, float tmin_1, float tmax_4)
-{
-    float3 t0_2 = ((lo_1 - origin_3) * inv_dir);
-    float3 t1_3 = ((hi_1 - origin_3) * inv_dir);
-    float3 near_3 = min(t0_2, t1_3);
-    float3 far_3 = max(t0_2, t1_3);
-    float enter_1 = max(max(near_3.x, near_3.y), max(near_3.z, tmin_1));
-    float exit_1 = min((min(far_3.x, far_3.y) * 1.0000005), min((far_3.z * 1.0000005), tmax_4));
-    if ((enter_1 <= exit_1)) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return asfloat(_e30);
-}
-
-Candidate intersect_scene(Ray ray_10, bool shadow_2)
+Candidate intersect_scene(Ray ray_11, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1237,7 +1226,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_10.tmax);
+    const Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1245,92 +1234,88 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2)
         const Candidate candidate_6 = _e14;
         return candidate_6;
     }
-    const float3 _e16 = safe_inverse(ray_10.dir);
     uint base_6 = frame_3.tlas_root;
-    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_6*32+0)), asuint(nodes.Load(base_6*32+12)), asfloat(nodes.Load3(base_6*32+16)), asuint(nodes.Load(base_6*32+28)));
-    float3 origin_4 = header_2.min_;
-    float3 scale_2 = header_2.max_;
-    const float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    const float _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
-    uint _e30 = F32_INF;
-    if ((_e28 == asfloat(_e30))) {
-        Candidate _e33 = best_2;
-        const Candidate candidate_7 = _e33;
+    GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_6*32+0)), asuint(nodes.Load(base_6*32+12)), asfloat(nodes.Load3(base_6*32+16)), asuint(nodes.Load(base_6*32+28)));
+    const BoxRay _e19 = header_box_ray(header_3, ray_11);
+    const float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
+    uint _e29 = F32_INF;
+    if ((_e27 == asfloat(_e29))) {
+        Candidate _e32 = best_2;
+        const Candidate candidate_7 = _e32;
         return candidate_7;
     }
-    const float3 _e34 = node_frame_hi(header_2);
-    const BoxRay _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_10);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if (((_e41 & NODE_LEAF_BIT) != 0u)) {
-            uint _e46 = child_1;
-            if ((((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                const Candidate _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_10, _e58, shadow_2);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if ((shadow_2 && (_e61 != NO_HIT))) {
-                    Candidate _e65 = best_2;
-                    const Candidate candidate_8 = _e65;
+        uint _e37 = child_1;
+        if (((_e37 & NODE_LEAF_BIT) != 0u)) {
+            uint _e42 = child_1;
+            if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if ((shadow_2 && (_e57 != NO_HIT))) {
+                    Candidate _e61 = best_2;
+                    const Candidate candidate_8 = _e61;
                     return candidate_8;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_12 = ConstructGpuNode(asfloat(nodes.Load3((base_6 + _e66)*32+0)), asuint(nodes.Load((base_6 + _e66)*32+12)), asfloat(nodes.Load3((base_6 + _e66)*32+16)), asuint(nodes.Load((base_6 + _e66)*32+28)));
-            float _e72 = best_2.t;
-            const float2 _e73 = children_entry(n_12, _e36, _e72);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_12 = ConstructGpuNode(asfloat(nodes.Load3((base_6 + _e62)*32+0)), asuint(nodes.Load((base_6 + _e62)*32+12)), asfloat(nodes.Load3((base_6 + _e62)*32+16)), asuint(nodes.Load((base_6 + _e62)*32+28)));
+            float _e68 = best_2.t;
+            const float2 _e69 = children_entry(n_12, _e19, _e68);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if (((tl_1 < asfloat(_e77)) && (tr_1 < asfloat(_e81)))) {
+            if (((tl_1 < asfloat(_e73)) && (tr_1 < asfloat(_e77)))) {
                 near_1 = n_12.a;
                 far_1 = n_12.b;
                 if ((tr_1 < tl_1)) {
                     near_1 = n_12.b;
                     far_1 = n_12.a;
                 }
-                uint _e92 = sp_2;
-                if ((_e92 < TLAS_STACK)) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack[min(uint(min(_e95, 71u)), 71u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = (_e101 + 1u);
+                uint _e88 = sp_2;
+                if ((_e88 < TLAS_STACK)) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack[min(uint(min(_e91, 71u)), 71u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = (_e97 + 1u);
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if ((tl_1 < asfloat(_e106))) {
+            uint _e102 = F32_INF;
+            if ((tl_1 < asfloat(_e102))) {
                 child_1 = n_12.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((tr_1 < asfloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((tr_1 < asfloat(_e107))) {
                 child_1 = n_12.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        const uint2 _e117 = pop(0u, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e112 = sp_2;
+        const uint2 _e113 = pop(0u, _e112);
+        if ((_e113.x == NO_HIT)) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    const Candidate candidate_9 = _e123;
+    Candidate _e119 = best_2;
+    const Candidate candidate_9 = _e119;
     return candidate_9;
 }
 
@@ -1349,25 +1334,25 @@ ConstantBackground load_ConstantBackground(uint offset_4)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_6, Ray ray_11)
+float3 constant_background(ConstantBackground b_6, Ray ray_12)
 {
     return b_6.color;
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13)
 {
     const ConstantBackground _e2 = load_ConstantBackground(offset_5);
-    const float3 _e3 = constant_background(_e2, ray_12);
+    const float3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
-float3 miss(Ray ray_13)
+float3 miss(Ray ray_14)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
     return _e9;
 }
 
@@ -1614,8 +1599,8 @@ float3 step_toward(float3 x_3, float3 s_1)
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_16 = (n_4 * (d_5).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_16 = (n_4 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
@@ -1623,7 +1608,7 @@ float3 offset_origin(float3 p_5, float3 n_4, float error)
 Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
 {
     float3 n_5 = (float3)0;
-    float tmax_5 = (float)0;
+    float tmax_4 = (float)0;
 
     n_5 = normal_5;
     float3 _e5 = n_5;
@@ -1637,18 +1622,18 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
     float3 _e22 = n_5;
     const float3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = asfloat(_e25);
+    tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < asfloat(_e29))) {
         float3 light = (position_4 + (dir_2 * (dist_1).xxx));
-        float dd_1 = dot(dir_2, dir_2);
-        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        float dd = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd);
         float3 l_7 = (abs(position_4) + abs((dir_2 * (dist_1).xxx)));
-        tmax_5 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd)));
     }
-    float _e59 = tmax_5;
-    const Ray ray_34 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_34;
+    float _e59 = tmax_4;
+    const Ray ray_35 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_35;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -1771,13 +1756,13 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf)
     return _e8;
 }
 
-float3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, float3 secondary)
+float3 path_diffuse_shade(PathDiffuse m, Ray ray_15, Hit hit_1, float3 secondary)
 {
     float3 direct = (float3)0;
     uint i_6 = (uint)0;
 
-    float3 n_13 = faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
-    float3 ng = faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
+    float3 n_13 = faceforward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     direct = (0.0).xxx;
     const uint _e16 = light_count_query();
     i_6 = 0u;
@@ -1825,34 +1810,34 @@ QuadLamp load_QuadLamp(uint offset_10)
     return quadlamp;
 }
 
-bool after_nee_bounce(Ray ray_15)
+bool after_nee_bounce(Ray ray_16)
 {
-    return (dot(ray_15.dir, ray_15.dir) > 2.0);
+    return (dot(ray_16.dir, ray_16.dir) > 2.0);
 }
 
-float bounce_pdf(Ray ray_16)
+float bounce_pdf(Ray ray_17)
 {
-    float x_6 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
+    float x_6 = (length(ray_17.dir) - MIS_BOUNCE_LENGTH);
     if (!((x_6 > -0.25))) {
         return 0.0;
     }
     return (exp((max(x_6, 0.0) * 90.0)) - 1.0);
 }
 
-float3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2)
+float3 quad_lamp_shade(QuadLamp m_1, Ray ray_18, Hit hit_2)
 {
     if (!(hit_2.front_face)) {
         return (0.0).xxx;
     }
     float3 le = (m_1.color * (m_1.intensity).xxx);
-    const bool _e11 = after_nee_bounce(ray_17);
+    const bool _e11 = after_nee_bounce(ray_18);
     if (!(_e11)) {
         return le;
     }
-    const float _e13 = bounce_pdf(ray_17);
-    float len = length(ray_17.dir);
+    const float _e13 = bounce_pdf(ray_18);
+    float len = length(ray_18.dir);
     float dist_5 = (hit_2.t * len);
-    float cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
+    float cos_l = (abs(dot(hit_2.geometric_normal, ray_18.dir)) / len);
     float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     const float _e29 = mis_weight(_e13, pl);
     return (le * (_e29).xxx);
@@ -1877,20 +1862,20 @@ SphereLamp load_SphereLamp(uint offset_11)
     return spherelamp;
 }
 
-float3 sphere_lamp_shade(SphereLamp m_2, Ray ray_18, Hit hit_3)
+float3 sphere_lamp_shade(SphereLamp m_2, Ray ray_19, Hit hit_3)
 {
     if (!(hit_3.front_face)) {
         return (0.0).xxx;
     }
     float r2_3 = max((m_2.radius * m_2.radius), 1e-20);
     float3 le_1 = (m_2.color * (((m_2.intensity * INV_PI) / r2_3)).xxx);
-    const bool _e19 = after_nee_bounce(ray_18);
+    const bool _e19 = after_nee_bounce(ray_19);
     if (!(_e19)) {
         return le_1;
     }
-    const float _e21 = bounce_pdf(ray_18);
+    const float _e21 = bounce_pdf(ray_19);
     float3 center_ = (hit_3.position - (hit_3.normal * (m_2.radius).xxx));
-    float3 to_center_1 = (center_ - ray_18.origin);
+    float3 to_center_1 = (center_ - ray_19.origin);
     float s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     float one_minus_cos_max_1 = (s2_1 / (1.0 + sqrt((1.0 - s2_1))));
     float pl_1 = (1.0 / max((TAU * one_minus_cos_max_1), 1e-30));
@@ -1923,16 +1908,16 @@ PathPbr load_PathPbr(uint offset_12)
     return pathpbr;
 }
 
-float3 path_pbr_ng(Ray ray_19, Hit hit_4)
+float3 path_pbr_ng(Ray ray_20, Hit hit_4)
 {
-    return faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
 }
 
-float3 path_pbr_n(Ray ray_20, Hit hit_5)
+float3 path_pbr_n(Ray ray_21, Hit hit_5)
 {
-    const float3 _e2 = path_pbr_ng(ray_20, hit_5);
+    const float3 _e2 = path_pbr_ng(ray_21, hit_5);
     float3 n_14 = faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return ((dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2);
+    return ((dot(n_14, ray_21.dir) < 0.0) ? n_14 : _e2);
 }
 
 float pbr_alpha2_(float roughness)
@@ -1950,8 +1935,8 @@ float3 pbr_fresnel(float3 f0_, float c_2)
 
 float pbr_ggx_d(float ndh, float a2_)
 {
-    float d_6 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_6 * d_6));
+    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1)
@@ -2020,17 +2005,17 @@ float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, fl
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
-float3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, float3 secondary_1)
+float3 path_pbr_shade(PathPbr m_3, Ray ray_22, Hit hit_6, float3 secondary_1)
 {
     float3 direct_1 = (float3)0;
     uint i_7 = (uint)0;
     float w = (float)0;
 
-    const float3 _e4 = path_pbr_n(ray_21, hit_6);
-    const float3 _e6 = normalize_vec3f(ray_21.dir);
+    const float3 _e4 = path_pbr_n(ray_22, hit_6);
+    const float3 _e6 = normalize_vec3f(ray_22.dir);
     float3 v_7 = -(_e6);
     direct_1 = (0.0).xxx;
-    const float3 _e11 = path_pbr_ng(ray_21, hit_6);
+    const float3 _e11 = path_pbr_ng(ray_22, hit_6);
     const uint _e13 = light_count_query();
     i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -2070,27 +2055,27 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7, float3 secondary_2)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_23, Hit hit_7, float3 secondary_2)
 {
     switch(type_id_4) {
         case 0u: {
             const PathDiffuse _e5 = load_PathDiffuse(offset_13);
-            const float3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
+            const float3 _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             const QuadLamp _e7 = load_QuadLamp(offset_13);
-            const float3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
+            const float3 _e8 = quad_lamp_shade(_e7, ray_23, hit_7);
             return _e8;
         }
         case 2u: {
             const SphereLamp _e9 = load_SphereLamp(offset_13);
-            const float3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
+            const float3 _e10 = sphere_lamp_shade(_e9, ray_23, hit_7);
             return _e10;
         }
         case 3u: {
             const PathPbr _e11 = load_PathPbr(offset_13);
-            const float3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
+            const float3 _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -2100,32 +2085,32 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_23, Candidate c_4)
+float3 shade_direct(Ray ray_24, Candidate c_4)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_23, c_4);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_24, c_4);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_24, float t_1, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_25, float t_1, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_25, float t_2, float3 radiance_1)
+float3 through_medium(Ray ray_26, float t_2, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_25.medium == 0u)) {
+    if ((ray_26.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_25.medium - 1u)*128+0)), asfloat(instances.Load4((ray_25.medium - 1u)*128+16)), asfloat(instances.Load4((ray_25.medium - 1u)*128+32)), asfloat(instances.Load4((ray_25.medium - 1u)*128+48)), asfloat(instances.Load4((ray_25.medium - 1u)*128+64)), asfloat(instances.Load4((ray_25.medium - 1u)*128+80)), asuint(instances.Load((ray_25.medium - 1u)*128+96)), asuint(instances.Load((ray_25.medium - 1u)*128+100)), asuint(instances.Load((ray_25.medium - 1u)*128+104)), asuint(instances.Load((ray_25.medium - 1u)*128+108)), asuint(instances.Load((ray_25.medium - 1u)*128+112)), asuint(instances.Load((ray_25.medium - 1u)*128+116)), asuint(instances.Load((ray_25.medium - 1u)*128+120)), asuint(instances.Load((ray_25.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_26.medium - 1u)*128+0)), asfloat(instances.Load4((ray_26.medium - 1u)*128+16)), asfloat(instances.Load4((ray_26.medium - 1u)*128+32)), asfloat(instances.Load4((ray_26.medium - 1u)*128+48)), asfloat(instances.Load4((ray_26.medium - 1u)*128+64)), asfloat(instances.Load4((ray_26.medium - 1u)*128+80)), asuint(instances.Load((ray_26.medium - 1u)*128+96)), asuint(instances.Load((ray_26.medium - 1u)*128+100)), asuint(instances.Load((ray_26.medium - 1u)*128+104)), asuint(instances.Load((ray_26.medium - 1u)*128+108)), asuint(instances.Load((ray_26.medium - 1u)*128+112)), asuint(instances.Load((ray_26.medium - 1u)*128+116)), asuint(instances.Load((ray_26.medium - 1u)*128+120)), asuint(instances.Load((ray_26.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
     return _e21;
 }
 
@@ -2138,9 +2123,9 @@ PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
     return ret;
 }
 
-PathState start_path(Ray ray_26)
+PathState start_path(Ray ray_27)
 {
-    const PathState pathstate = ConstructPathState(ray_26, (1.0).xxx, (0.0).xxx, true);
+    const PathState pathstate = ConstructPathState(ray_27, (1.0).xxx, (0.0).xxx, true);
     return pathstate;
 }
 
@@ -2169,7 +2154,7 @@ void rt_spawn(float3 dir_5, float3 weight)
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8)
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_28, Hit hit_8)
 {
     float3 weight_1 = (float3)0;
 
@@ -2178,7 +2163,7 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8)
     const float2 _e12 = rand2_next();
     const float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_27.depth >= m_4.roulette_depth)) {
+    if ((ray_28.depth >= m_4.roulette_depth)) {
         float q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         const float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -2209,8 +2194,8 @@ float3 pbr_sample_vndf(float3 ve, float alpha, float2 u_1)
     float r_5 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
     float p1_ = (r_5 * cos(phi_2));
-    float s_9 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_9) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_9 * r_5) * sin(phi_2)));
+    float s_8 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_5) * sin(phi_2)));
     float3 _e59 = t1_;
     float3 nh = (((_e59 * (p1_).xxx) + (t2_ * (p2_).xxx)) + (_e9 * (sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0))).xxx));
     const float3 _e84 = normalize_vec3f(float3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
@@ -2261,13 +2246,13 @@ PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 
     return pbrsample_2;
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9)
+void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9)
 {
     float3 weight_2 = (float3)0;
 
-    const float3 _e3 = path_pbr_ng(ray_28, hit_9);
-    const float3 _e4 = path_pbr_n(ray_28, hit_9);
-    const float3 _e6 = normalize_vec3f(ray_28.dir);
+    const float3 _e3 = path_pbr_ng(ray_29, hit_9);
+    const float3 _e4 = path_pbr_n(ray_29, hit_9);
+    const float3 _e6 = normalize_vec3f(ray_29.dir);
     float3 v_8 = -(_e6);
     const float _e11 = rand_next();
     const float2 _e12 = rand2_next();
@@ -2276,7 +2261,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9)
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_28.depth >= m_5.roulette_depth)) {
+    if ((ray_29.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2294,17 +2279,17 @@ void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9)
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_29, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_30, Hit hit_10)
 {
     switch(type_id_6) {
         case 0u: {
             const PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_29, hit_10);
+            path_diffuse_rays(_e4, ray_30, hit_10);
             return;
         }
         case 3u: {
             const PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_29, hit_10);
+            path_pbr_rays(_e5, ray_30, hit_10);
             return;
         }
         default: {
@@ -2343,26 +2328,26 @@ PathState path_step(PathState s_2, Candidate c_5)
     float3 weight_3 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_35 = s_2.ray;
+    Ray ray_36 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_35);
+        const float3 _e14 = miss(ray_36);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
         const PathState pathstate_1 = _e17;
         return pathstate_1;
     }
     GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_5.slot*128+0)), asfloat(instances.Load4(c_5.slot*128+16)), asfloat(instances.Load4(c_5.slot*128+32)), asfloat(instances.Load4(c_5.slot*128+48)), asfloat(instances.Load4(c_5.slot*128+64)), asfloat(instances.Load4(c_5.slot*128+80)), asuint(instances.Load(c_5.slot*128+96)), asuint(instances.Load(c_5.slot*128+100)), asuint(instances.Load(c_5.slot*128+104)), asuint(instances.Load(c_5.slot*128+108)), asuint(instances.Load(c_5.slot*128+112)), asuint(instances.Load(c_5.slot*128+116)), asuint(instances.Load(c_5.slot*128+120)), asuint(instances.Load(c_5.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_35, c_5);
+    const Hit _e22 = finish_hit(ray_36, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = (0.0).xxx;
     weight_3 = (0.0).xxx;
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_35.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_36.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_35, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_36, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -2372,7 +2357,7 @@ PathState path_step(PathState s_2, Candidate c_5)
             weight_3 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_35, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_36, _e22, (0.0).xxx);
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2391,7 +2376,7 @@ PathState path_step(PathState s_2, Candidate c_5)
         const PathState pathstate_3 = _e89;
         return pathstate_3;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_35.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_36.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -2408,7 +2393,7 @@ PathState path_step(PathState s_2, Candidate c_5)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_35.depth + 1u), RAY_SECONDARY, ray_35.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_36.depth + 1u), RAY_SECONDARY, ray_36.medium);
     out_.live = true;
     PathState _e128 = out_;
     const PathState pathstate_5 = _e128;

@@ -454,19 +454,19 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint x_2 = {};
-    uint d_1 = rng_state;
-    rng_state = d_1 + 1u;
+    uint d = rng_state;
+    rng_state = d + 1u;
     uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 24u)];
-    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e16 = pcg_hash(_e10 ^ ((d >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_8 = metal::reverse_bits(_e24);
     x_2 = i_8;
-    if ((d_1 & 1u) != 0u) {
+    if ((d & 1u) != 0u) {
         uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
-    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
@@ -549,9 +549,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
     return _e25;
 }
@@ -559,19 +559,19 @@ Ray to_object(
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_3);
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_3[metal::min(kz, 2u)];
+    float dz = d_2[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 node_point(
@@ -597,15 +597,24 @@ BoxRay box_ray(
 ) {
     float m_6 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_6) >> 23u) & 255u, 1u), 253u);
-    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
     float unit = as_type<float>(e << 23u);
     metal::float3 floor = metal::float3(0.0000000000009094947);
-    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
-    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_6 * floor, metal::abs(d_4) < floor);
+    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_6 * floor, metal::abs(d_3) < floor);
     metal::float3 rel = origin_1 - ray_2.origin;
     metal::float3 start = rel * inv;
     metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_6;
     return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
+BoxRay header_box_ray(
+    GpuNode header_1,
+    Ray ray_3
+) {
+    metal::float3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
+    return _e7;
 }
 
 metal::float3 hit_triangle(
@@ -652,7 +661,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_3,
+    Ray ray_4,
     Candidate c
 ) {
     return true;
@@ -729,7 +738,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_4,
+    Ray ray_5,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -745,23 +754,22 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_5 = inst_2.blas_root;
-    GpuNode header_1 = nodes[base_5];
-    metal::float3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_4);
+    GpuNode header_2 = nodes[base_5];
+    BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            uint _e27 = child;
-            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e34 = child;
-            uint first = _e34 & NODE_FIRST_MASK;
+        uint _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            uint _e22 = child;
+            uint count_1 = (_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e29 = child;
+            uint first = _e29 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -769,83 +777,83 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = _e80 + 1u;
+                    uint _e75 = k;
+                    k = _e75 + 1u;
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if (_e39 >= count_1) {
+                uint _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = (inst_2.triangle_offset + first) + _e43;
-                float _e47 = best.t;
-                metal::float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
-                uint _e54 = F32_INF;
-                if (_e51.x < as_type<float>(_e54)) {
-                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e63.w);
+                uint _e38 = k;
+                uint prim = (inst_2.triangle_offset + first) + _e38;
+                float _e42 = best.t;
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_9 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
-                    bool _e78 = accept(inst_2, world_ray, c_9);
-                    if (_e78) {
+                    Candidate c_9 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_9);
+                    if (_e73) {
                         best = c_9;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_11 = nodes[base_5 + _e83];
-            float _e89 = best.t;
-            metal::float2 _e90 = children_entry(n_11, _e17, _e89, F32_INF);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
+            uint _e78 = child;
+            GpuNode n_11 = nodes[base_5 + _e78];
+            float _e84 = best.t;
+            metal::float2 _e85 = children_entry(n_11, _e12, _e84, F32_INF);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
                 near = n_11.a;
                 far = n_11.b;
                 if ((tr < tl) != shadow) {
                     near = n_11.b;
                     far = n_11.a;
                 }
-                uint _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 71u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = _e121 + 1u;
+                uint _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 71u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = _e116 + 1u;
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tl < as_type<float>(_e126)) {
+            uint _e121 = F32_INF;
+            if (tl < as_type<float>(_e121)) {
                 child = n_11.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if (tr < as_type<float>(_e131)) {
+            uint _e126 = F32_INF;
+            if (tr < as_type<float>(_e126)) {
                 child = n_11.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
-        if (_e137.x == NO_HIT) {
+        uint _e131 = sp_1;
+        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Sphere load_Sphere(
@@ -862,14 +870,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_5,
+    Ray ray_6,
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f_1 = ray_5.origin - s.center;
-    float a_5 = metal::dot(ray_5.dir, ray_5.dir);
-    float b_8 = -(metal::dot(f_1, ray_5.dir));
-    metal::float3 l_6 = f_1 + (ray_5.dir * metal::float3(b_8 / a_5));
+    metal::float3 f_1 = ray_6.origin - s.center;
+    float a_5 = metal::dot(ray_6.dir, ray_6.dir);
+    float b_8 = -(metal::dot(f_1, ray_6.dir));
+    metal::float3 l_6 = f_1 + (ray_6.dir * metal::float3(b_8 / a_5));
     float r2_ = s.radius * s.radius;
     float disc = a_5 * (r2_ - metal::dot(l_6, l_6));
     if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
@@ -881,17 +889,17 @@ Intersection sphere_intersect(
     float t1_2 = q_1 / a_5;
     t = metal::min(t0_1, t1_2);
     float _e52 = t;
-    if (!((_e52 >= ray_5.tmin))) {
+    if (!((_e52 >= ray_6.tmin))) {
         t = metal::max(t0_1, t1_2);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
+    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t;
-    metal::float3 _e82 = normalize_vec3f((ray_5.origin + (ray_5.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_6.origin + (ray_6.dir * metal::float3(_e76))) - s.center);
     float u_4 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv = metal::float2(u_4, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t;
@@ -901,19 +909,19 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_3,
-    Ray ray_6,
+    Ray ray_7,
     device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Sphere _e2 = load_Sphere(offset_3, params, _buffer_sizes);
-    Intersection _e3 = sphere_intersect(_e2, ray_6, F32_INF);
+    Intersection _e3 = sphere_intersect(_e2, ray_7, F32_INF);
     return _e3;
 }
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_7,
+    Ray ray_8,
     Candidate best_1,
     bool shadow_1,
     device type_5 const& params,
@@ -926,12 +934,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_7);
+    Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -941,7 +949,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_10 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_7, c_10);
+        bool _e40 = accept(inst_6, ray_8, c_10);
         if (_e40) {
             return c_10;
         }
@@ -1024,7 +1032,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_8,
+    Ray ray_9,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -1036,9 +1044,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_8.origin, ray_8.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_9.origin, ray_9.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_8.origin + (ray_8.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_9.origin + (ray_9.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1079,7 +1087,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_8.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_9.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1164,53 +1172,27 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_9 = {};
+    Ray ray_10 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_9 = _e7;
-    ray_9.depth = 0u;
-    ray_9.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_9.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_10.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_9.medium = _e17;
-    Ray _e18 = ray_9;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
     return _e18;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
+metal::float3 node_frame_bounds(
 ) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_8 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_8 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
-float slab(
-    metal::float3 lo_1,
-    metal::float3 hi_1,
-    metal::float3 origin_3,
-    metal::float3 inv_dir,
-    float tmin_1,
-    float tmax_4,
-    thread uint& F32_INF
-) {
-    metal::float3 t0_2 = (lo_1 - origin_3) * inv_dir;
-    metal::float3 t1_3 = (hi_1 - origin_3) * inv_dir;
-    metal::float3 near_3 = metal::min(t0_2, t1_3);
-    metal::float3 far_3 = metal::max(t0_2, t1_3);
-    float enter_1 = metal::max(metal::max(near_3.x, near_3.y), metal::max(near_3.z, tmin_1));
-    float exit_1 = metal::min(metal::min(far_3.x, far_3.y) * 1.0000005, metal::min(far_3.z * 1.0000005, tmax_4));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    return metal::float3(65535.0);
 }
 
 Candidate intersect_scene(
-    Ray ray_10,
+    Ray ray_11,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1229,97 +1211,93 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_10.dir);
     uint base_6 = frame_3.tlas_root;
-    GpuNode header_2 = nodes[base_6];
-    metal::float3 origin_4 = header_2.min;
-    metal::float3 scale_2 = header_2.max;
-    metal::float3 _e23 = node_frame_hi(header_2);
-    float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
-    uint _e30 = F32_INF;
-    if (_e28 == as_type<float>(_e30)) {
-        Candidate _e33 = best_2;
-        return _e33;
+    GpuNode header_3 = nodes[base_6];
+    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    metal::float3 _e22 = node_frame_bounds();
+    float _e24 = best_2.t;
+    float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
+    uint _e29 = F32_INF;
+    if (_e27 == as_type<float>(_e29)) {
+        Candidate _e32 = best_2;
+        return _e32;
     }
-    metal::float3 _e34 = node_frame_hi(header_2);
-    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_10);
     sp_2 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            uint _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_2;
-                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_10, _e58, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
-                best_2 = _e59;
-                uint _e61 = best_2.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    Candidate _e65 = best_2;
-                    return _e65;
+        uint _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            uint _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_2;
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_11, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e55;
+                uint _e57 = best_2.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    Candidate _e61 = best_2;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_12 = nodes[base_6 + _e66];
-            float _e72 = best_2.t;
-            metal::float2 _e73 = children_entry(n_12, _e36, _e72, F32_INF);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_12 = nodes[base_6 + _e62];
+            float _e68 = best_2.t;
+            metal::float2 _e69 = children_entry(n_12, _e19, _e68, F32_INF);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
+            if ((tl_1 < as_type<float>(_e73)) && (tr_1 < as_type<float>(_e77))) {
                 near_1 = n_12.a;
                 far_1 = n_12.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_12.b;
                     far_1 = n_12.a;
                 }
-                uint _e92 = sp_2;
-                if (_e92 < TLAS_STACK) {
-                    uint _e95 = sp_2;
-                    uint _e96 = far_1;
-                    traversal_stack.inner[metal::min(_e95, 71u)] = _e96;
-                    uint _e101 = sp_2;
-                    sp_2 = _e101 + 1u;
+                uint _e88 = sp_2;
+                if (_e88 < TLAS_STACK) {
+                    uint _e91 = sp_2;
+                    uint _e92 = far_1;
+                    traversal_stack.inner[metal::min(_e91, 71u)] = _e92;
+                    uint _e97 = sp_2;
+                    sp_2 = _e97 + 1u;
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if (tl_1 < as_type<float>(_e106)) {
+            uint _e102 = F32_INF;
+            if (tl_1 < as_type<float>(_e102)) {
                 child_1 = n_12.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if (tr_1 < as_type<float>(_e111)) {
+            uint _e107 = F32_INF;
+            if (tr_1 < as_type<float>(_e107)) {
                 child_1 = n_12.b;
                 continue;
             }
         }
-        uint _e116 = sp_2;
-        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e112 = sp_2;
+        metal::uint2 _e113 = pop(0u, _e112, traversal_stack);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_2 = _e117.y;
+        child_1 = _e113.x;
+        sp_2 = _e113.y;
     }
-    Candidate _e123 = best_2;
-    return _e123;
+    Candidate _e119 = best_2;
+    return _e119;
 }
 
 ConstantBackground load_ConstantBackground(
@@ -1335,7 +1313,7 @@ ConstantBackground load_ConstantBackground(
 
 metal::float3 constant_background(
     ConstantBackground b_6,
-    Ray ray_11
+    Ray ray_12
 ) {
     return b_6.color;
 }
@@ -1343,17 +1321,17 @@ metal::float3 constant_background(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_12,
+    Ray ray_13,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = constant_background(_e2, ray_12);
+    metal::float3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_13,
+    Ray ray_14,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1362,7 +1340,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1612,8 +1590,8 @@ metal::float3 offset_origin(
     metal::float3 n_4,
     float error
 ) {
-    float d_5 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_16 = n_4 * metal::float3(d_5);
+    float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_16 = n_4 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
     return _e17;
 }
@@ -1627,7 +1605,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_5 = {};
-    float tmax_5 = {};
+    float tmax_4 = {};
     n_5 = normal_5;
     metal::float3 _e5 = n_5;
     if (metal::dot(dir_2, _e5) < 0.0) {
@@ -1640,16 +1618,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_5;
     metal::float3 _e23 = offset_origin(position_4, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_5 = as_type<float>(_e25);
+    tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist_1 < as_type<float>(_e29)) {
         metal::float3 light = position_4 + (dir_2 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_2, dir_2);
-        float along_2 = metal::dot(light - _e23, dir_2) / dd_1;
+        float dd = metal::dot(dir_2, dir_2);
+        float along_2 = metal::dot(light - _e23, dir_2) / dd;
         metal::float3 l_7 = metal::abs(position_4) + metal::abs(dir_2 * metal::float3(dist_1));
-        tmax_5 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_7.x, l_7.y), l_7.z)) / metal::sqrt(dd_1));
+        tmax_4 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_7.x, l_7.y), l_7.z)) / metal::sqrt(dd));
     }
-    float _e59 = tmax_5;
+    float _e59 = tmax_4;
     return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -1822,7 +1800,7 @@ float mis_light_weight(
 
 metal::float3 path_diffuse_shade(
     PathDiffuse m,
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_1,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1841,8 +1819,8 @@ metal::float3 path_diffuse_shade(
 ) {
     metal::float3 direct = {};
     uint i_6 = {};
-    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
+    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     direct = metal::float3(0.0);
     uint _e16 = light_count_query(frame);
     i_6 = 0u;
@@ -1885,15 +1863,15 @@ QuadLamp load_QuadLamp(
 }
 
 bool after_nee_bounce(
-    Ray ray_15
+    Ray ray_16
 ) {
-    return metal::dot(ray_15.dir, ray_15.dir) > 2.0;
+    return metal::dot(ray_16.dir, ray_16.dir) > 2.0;
 }
 
 float bounce_pdf(
-    Ray ray_16
+    Ray ray_17
 ) {
-    float x_6 = metal::length(ray_16.dir) - MIS_BOUNCE_LENGTH;
+    float x_6 = metal::length(ray_17.dir) - MIS_BOUNCE_LENGTH;
     if (!((x_6 > -0.25))) {
         return 0.0;
     }
@@ -1902,7 +1880,7 @@ float bounce_pdf(
 
 metal::float3 quad_lamp_shade(
     QuadLamp m_1,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_2,
     thread uint& F32_INF
 ) {
@@ -1910,14 +1888,14 @@ metal::float3 quad_lamp_shade(
         return metal::float3(0.0);
     }
     metal::float3 le = m_1.color * metal::float3(m_1.intensity);
-    bool _e11 = after_nee_bounce(ray_17);
+    bool _e11 = after_nee_bounce(ray_18);
     if (!(_e11)) {
         return le;
     }
-    float _e13 = bounce_pdf(ray_17);
-    float len = metal::length(ray_17.dir);
+    float _e13 = bounce_pdf(ray_18);
+    float len = metal::length(ray_18.dir);
     float dist_5 = hit_2.t * len;
-    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_17.dir)) / len;
+    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_18.dir)) / len;
     float pl = (dist_5 * dist_5) / metal::max(cos_l * m_1.area, 0.000000000000000000000000000001);
     float _e29 = mis_weight(_e13, pl, F32_INF);
     return le * metal::float3(_e29);
@@ -1938,7 +1916,7 @@ SphereLamp load_SphereLamp(
 
 metal::float3 sphere_lamp_shade(
     SphereLamp m_2,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_3,
     thread uint& F32_INF
 ) {
@@ -1947,13 +1925,13 @@ metal::float3 sphere_lamp_shade(
     }
     float r2_3 = metal::max(m_2.radius * m_2.radius, 0.00000000000000000001);
     metal::float3 le_1 = m_2.color * metal::float3((m_2.intensity * INV_PI) / r2_3);
-    bool _e19 = after_nee_bounce(ray_18);
+    bool _e19 = after_nee_bounce(ray_19);
     if (!(_e19)) {
         return le_1;
     }
-    float _e21 = bounce_pdf(ray_18);
+    float _e21 = bounce_pdf(ray_19);
     metal::float3 center = hit_3.position - (hit_3.normal * metal::float3(m_2.radius));
-    metal::float3 to_center_1 = center - ray_18.origin;
+    metal::float3 to_center_1 = center - ray_19.origin;
     float s2_1 = r2_3 / metal::max(metal::dot(to_center_1, to_center_1), r2_3);
     float one_minus_cos_max_1 = s2_1 / (1.0 + metal::sqrt(1.0 - s2_1));
     float pl_1 = 1.0 / metal::max(TAU * one_minus_cos_max_1, 0.000000000000000000000000000001);
@@ -1979,19 +1957,19 @@ PathPbr load_PathPbr(
 }
 
 metal::float3 path_pbr_ng(
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_4
 ) {
-    return metal::faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
+    return metal::faceforward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
 }
 
 metal::float3 path_pbr_n(
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_5
 ) {
-    metal::float3 _e2 = path_pbr_ng(ray_20, hit_5);
+    metal::float3 _e2 = path_pbr_ng(ray_21, hit_5);
     metal::float3 n_14 = metal::faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return (metal::dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2;
+    return (metal::dot(n_14, ray_21.dir) < 0.0) ? n_14 : _e2;
 }
 
 float pbr_alpha2_(
@@ -2014,8 +1992,8 @@ float pbr_ggx_d(
     float ndh,
     float a2_
 ) {
-    float d_6 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-    return (a2_ * INV_PI) / (d_6 * d_6);
+    float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_5 * d_5);
 }
 
 float pbr_smith_v(
@@ -2108,7 +2086,7 @@ float pbr_pdf(
 
 metal::float3 path_pbr_shade(
     PathPbr m_3,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -2128,11 +2106,11 @@ metal::float3 path_pbr_shade(
     metal::float3 direct_1 = {};
     uint i_7 = {};
     float w = {};
-    metal::float3 _e4 = path_pbr_n(ray_21, hit_6);
-    metal::float3 _e6 = normalize_vec3f(ray_21.dir);
+    metal::float3 _e4 = path_pbr_n(ray_22, hit_6);
+    metal::float3 _e6 = normalize_vec3f(ray_22.dir);
     metal::float3 v_7 = -(_e6);
     direct_1 = metal::float3(0.0);
-    metal::float3 _e11 = path_pbr_ng(ray_21, hit_6);
+    metal::float3 _e11 = path_pbr_ng(ray_22, hit_6);
     uint _e13 = light_count_query(frame);
     i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -2171,7 +2149,7 @@ metal::float3 path_pbr_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_13,
-    Ray ray_22,
+    Ray ray_23,
     Hit hit_7,
     metal::float3 secondary_2,
     constant FrameUniforms& frame,
@@ -2191,22 +2169,22 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13, params, _buffer_sizes);
-            metal::float3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+            metal::float3 _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             QuadLamp _e7 = load_QuadLamp(offset_13, params, _buffer_sizes);
-            metal::float3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7, F32_INF);
+            metal::float3 _e8 = quad_lamp_shade(_e7, ray_23, hit_7, F32_INF);
             return _e8;
         }
         case 2u: {
             SphereLamp _e9 = load_SphereLamp(offset_13, params, _buffer_sizes);
-            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7, F32_INF);
+            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_23, hit_7, F32_INF);
             return _e10;
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13, params, _buffer_sizes);
-            metal::float3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+            metal::float3 _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -2217,7 +2195,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_23,
+    Ray ray_24,
     Candidate c_4,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2235,15 +2213,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_23, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_24, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_14,
-    Ray ray_24,
+    Ray ray_25,
     float t_1,
     metal::float3 radiance
 ) {
@@ -2251,7 +2229,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_25,
+    Ray ray_26,
     float t_2,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2260,21 +2238,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_25.medium == 0u) {
+    if (ray_26.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_25.medium - 1u];
+    GpuInstance inst_9 = instances[ray_26.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
     return _e21;
 }
 
 PathState start_path(
-    Ray ray_26
+    Ray ray_27
 ) {
-    return PathState {ray_26, metal::float3(1.0), metal::float3(0.0), true};
+    return PathState {ray_27, metal::float3(1.0), metal::float3(0.0), true};
 }
 
 metal::float3 sample_cosine_hemisphere(
@@ -2313,7 +2291,7 @@ void rt_spawn(
 
 void path_diffuse_rays(
     PathDiffuse m_4,
-    Ray ray_27,
+    Ray ray_28,
     Hit hit_8,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2327,7 +2305,7 @@ void path_diffuse_rays(
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_27.depth >= m_4.roulette_depth) {
+    if (ray_28.depth >= m_4.roulette_depth) {
         float q_4 = metal::saturate(metal::max(m_4.albedo[0], metal::max(m_4.albedo[1], m_4.albedo[2])));
         float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_4) {
@@ -2360,8 +2338,8 @@ metal::float3 pbr_sample_vndf(
     float r_5 = metal::sqrt(u_1.x);
     float phi_2 = TAU * u_1.y;
     float p1_ = r_5 * metal::cos(phi_2);
-    float s_9 = 0.5 * (1.0 + _e9.z);
-    float p2_ = ((1.0 - s_9) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_9 * r_5) * metal::sin(phi_2));
+    float s_8 = 0.5 * (1.0 + _e9.z);
+    float p2_ = ((1.0 - s_8) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_8 * r_5) * metal::sin(phi_2));
     metal::float3 _e59 = t1_;
     metal::float3 nh = ((_e59 * metal::float3(p1_)) + (t2_ * metal::float3(p2_))) + (_e9 * metal::float3(metal::sqrt(metal::max((1.0 - (p1_ * p1_)) - (p2_ * p2_), 0.0))));
     metal::float3 _e84 = normalize_vec3f(metal::float3(alpha * nh.x, alpha * nh.y, metal::max(nh.z, 0.0)));
@@ -2408,7 +2386,7 @@ PbrSample pbr_sample(
 
 void path_pbr_rays(
     PathPbr m_5,
-    Ray ray_28,
+    Ray ray_29,
     Hit hit_9,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2417,9 +2395,9 @@ void path_pbr_rays(
     thread uint& spawn_count
 ) {
     metal::float3 weight_2 = {};
-    metal::float3 _e3 = path_pbr_ng(ray_28, hit_9);
-    metal::float3 _e4 = path_pbr_n(ray_28, hit_9);
-    metal::float3 _e6 = normalize_vec3f(ray_28.dir);
+    metal::float3 _e3 = path_pbr_ng(ray_29, hit_9);
+    metal::float3 _e4 = path_pbr_n(ray_29, hit_9);
+    metal::float3 _e6 = normalize_vec3f(ray_29.dir);
     metal::float3 v_8 = -(_e6);
     float _e11 = rand_next(scratch, rng_state);
     metal::float2 _e12 = rand2_next(scratch, rng_state);
@@ -2428,7 +2406,7 @@ void path_pbr_rays(
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_28.depth >= m_5.roulette_depth) {
+    if (ray_29.depth >= m_5.roulette_depth) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2449,7 +2427,7 @@ void path_pbr_rays(
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_29,
+    Ray ray_30,
     Hit hit_10,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2462,12 +2440,12 @@ void dispatch_secondary_rays(
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15, params, _buffer_sizes);
-            path_diffuse_rays(_e4, ray_29, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_diffuse_rays(_e4, ray_30, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15, params, _buffer_sizes);
-            path_pbr_rays(_e5, ray_29, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_pbr_rays(_e5, ray_30, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -2530,25 +2508,25 @@ PathState path_step(
     metal::float3 dir_8 = {};
     metal::float3 weight_3 = {};
     metal::float3 beta = {};
-    Ray ray_30 = s_2.ray;
+    Ray ray_31 = s_2.ray;
     out = s_2;
     out.live = false;
     if (c_5.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_30, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_31, frame, params, _buffer_sizes);
         out.radiance = s_2.radiance + (s_2.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_10 = instances[c_5.slot];
-    Hit _e22 = finish_hit(ray_30, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_31, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = metal::float3(0.0);
     weight_3 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_2.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_31, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -2558,7 +2536,7 @@ PathState path_step(
             weight_3 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_31, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     out.radiance = s_2.radiance + (s_2.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {

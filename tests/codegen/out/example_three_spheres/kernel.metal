@@ -440,19 +440,19 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint x_2 = {};
-    uint d_1 = rng_state;
-    rng_state = d_1 + 1u;
+    uint d = rng_state;
+    rng_state = d + 1u;
     uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)];
-    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e16 = pcg_hash(_e10 ^ ((d >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_7 = metal::reverse_bits(_e24);
     x_2 = i_7;
-    if ((d_1 & 1u) != 0u) {
+    if ((d & 1u) != 0u) {
         uint _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
     uint _e45 = x_2;
     uint _e46 = laine_karras(_e45, scramble);
     return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
@@ -531,9 +531,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
     return _e25;
 }
@@ -541,19 +541,19 @@ Ray to_object(
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_3);
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_3[metal::min(kz, 2u)];
+    float dz = d_2[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 node_point(
@@ -579,15 +579,24 @@ BoxRay box_ray(
 ) {
     float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
-    metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
+    metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
     float unit = as_type<float>(e << 23u);
     metal::float3 floor = metal::float3(0.0000000000009094947);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
-    metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_4 * floor, metal::abs(d_4) < floor);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
+    metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_4 * floor, metal::abs(d_3) < floor);
     metal::float3 rel = origin_1 - ray_2.origin;
     metal::float3 start = rel * inv;
     metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
     return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
+}
+
+BoxRay header_box_ray(
+    GpuNode header_1,
+    Ray ray_3
+) {
+    metal::float3 _e4 = node_frame_hi(header_1);
+    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
+    return _e7;
 }
 
 metal::float3 hit_triangle(
@@ -634,7 +643,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_3,
+    Ray ray_4,
     Candidate c
 ) {
     return true;
@@ -711,7 +720,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_4,
+    Ray ray_5,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -727,23 +736,22 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_4);
+    TriangleRay _e7 = prepare_triangle_ray(ray_5);
     uint base_1 = inst_2.blas_root;
-    GpuNode header_1 = nodes[base_1];
-    metal::float3 _e14 = node_frame_hi(header_1);
-    BoxRay _e17 = box_ray(header_1.min, header_1.max, _e14 - header_1.min, ray_4);
+    GpuNode header_2 = nodes[base_1];
+    BoxRay _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            uint _e27 = child;
-            uint count_1 = (_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
-            uint _e34 = child;
-            uint first = _e34 & NODE_FIRST_MASK;
+        uint _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            uint _e22 = child;
+            uint count_1 = (_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e29 = child;
+            uint first = _e29 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -751,83 +759,83 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e80 = k;
-                    k = _e80 + 1u;
+                    uint _e75 = k;
+                    k = _e75 + 1u;
                 }
                 loop_init = false;
-                uint _e39 = k;
-                if (_e39 >= count_1) {
+                uint _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                uint _e43 = k;
-                uint prim = (inst_2.triangle_offset + first) + _e43;
-                float _e47 = best.t;
-                metal::float3 _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
-                uint _e54 = F32_INF;
-                if (_e51.x < as_type<float>(_e54)) {
-                    metal::float4 _e63 = triangles[(prim * 3u) + 1u];
-                    uint tag = as_type<uint>(_e63.w);
+                uint _e38 = k;
+                uint prim = (inst_2.triangle_offset + first) + _e38;
+                float _e42 = best.t;
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_7 = Candidate {_e51.x, owner, prim, {}, _e51.yz, {}, metal::float3(0.0)};
-                    bool _e78 = accept(inst_2, world_ray, c_7);
-                    if (_e78) {
+                    Candidate c_7 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_7);
+                    if (_e73) {
                         best = c_7;
                         if (shadow) {
-                            Candidate _e79 = best;
-                            return _e79;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e83 = child;
-            GpuNode n_8 = nodes[base_1 + _e83];
-            float _e89 = best.t;
-            metal::float2 _e90 = children_entry(n_8, _e17, _e89, F32_INF);
-            float tl = _e90.x;
-            float tr = _e90.y;
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((tl < as_type<float>(_e94)) && (tr < as_type<float>(_e98))) {
+            uint _e78 = child;
+            GpuNode n_8 = nodes[base_1 + _e78];
+            float _e84 = best.t;
+            metal::float2 _e85 = children_entry(n_8, _e12, _e84, F32_INF);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
                 near = n_8.a;
                 far = n_8.b;
                 if ((tr < tl) != shadow) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    uint _e114 = sp_1;
-                    uint _e116 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e114, 66u)] = _e116;
-                    uint _e121 = sp_1;
-                    sp_1 = _e121 + 1u;
+                uint _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 66u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = _e116 + 1u;
                 }
-                uint _e124 = near;
-                child = _e124;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e126 = F32_INF;
-            if (tl < as_type<float>(_e126)) {
+            uint _e121 = F32_INF;
+            if (tl < as_type<float>(_e121)) {
                 child = n_8.a;
                 continue;
             }
-            uint _e131 = F32_INF;
-            if (tr < as_type<float>(_e131)) {
+            uint _e126 = F32_INF;
+            if (tr < as_type<float>(_e126)) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e136 = sp_1;
-        metal::uint2 _e137 = pop(TLAS_STACK, _e136, traversal_stack);
-        if (_e137.x == NO_HIT) {
+        uint _e131 = sp_1;
+        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e143 = best;
-    return _e143;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 BvhMesh load_BvhMesh(
@@ -851,11 +859,11 @@ BvhNode mesh_node_query(
     uint reference = {};
     metal::uint3 q_1 = {};
     uint base_2 = params[m];
-    GpuNode header_2 = nodes[base_2];
-    lo_1 = header_2.min;
-    metal::float3 _e10 = node_frame_hi(header_2);
+    GpuNode header_3 = nodes[base_2];
+    lo_1 = header_3.min;
+    metal::float3 _e10 = node_frame_hi(header_3);
     hi_1 = _e10;
-    reference = header_2.a;
+    reference = header_3.a;
     if (i_1 >= 2u) {
         GpuNode n_9 = nodes[base_2 + (i_1 >> 1u)];
         q_1 = as_type<metal::uint3>(n_9.min);
@@ -866,11 +874,11 @@ BvhNode mesh_node_query(
         }
         metal::uint3 _e35 = q_1;
         metal::uint3 _e36 = node_box_lo(_e35);
-        metal::float3 _e37 = node_point(header_2.min, header_2.max, _e36);
+        metal::float3 _e37 = node_point(header_3.min, header_3.max, _e36);
         lo_1 = _e37;
         metal::uint3 _e40 = q_1;
         metal::uint3 _e41 = node_box_hi(_e40);
-        metal::float3 _e42 = node_point(header_2.min, header_2.max, _e41);
+        metal::float3 _e42 = node_point(header_3.min, header_3.max, _e41);
         hi_1 = _e42;
     }
     uint _e43 = reference;
@@ -892,35 +900,35 @@ BvhNode mesh_node_query(
 }
 
 metal::float2 intersect_aabb(
-    Ray ray_5,
+    Ray ray_6,
     metal::float3 min,
     metal::float3 max,
     thread uint& F32_INF,
     thread uint& F32_NEG_INF
 ) {
-    metal::bool3 parallel = metal::abs(ray_5.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::bool3 parallel = metal::abs(ray_6.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
     metal::float3 _e12 = metal::float3(1.0);
-    metal::float3 inv_dir_1 = _e12 / metal::select(ray_5.dir, _e12, parallel);
-    metal::float3 _e17 = (min - ray_5.origin) * inv_dir_1;
-    metal::float3 _e18 = (max - ray_5.origin) * inv_dir_1;
-    metal::bool3 _e23 = (min <= ray_5.origin) & (ray_5.origin <= max);
+    metal::float3 inv_dir = _e12 / metal::select(ray_6.dir, _e12, parallel);
+    metal::float3 _e17 = (min - ray_6.origin) * inv_dir;
+    metal::float3 _e18 = (max - ray_6.origin) * inv_dir;
+    metal::bool3 _e23 = (min <= ray_6.origin) & (ray_6.origin <= max);
     uint _e25 = F32_INF;
     metal::float3 _e27 = metal::float3(as_type<float>(_e25));
     uint _e29 = F32_NEG_INF;
     metal::float3 _e31 = metal::float3(as_type<float>(_e29));
     metal::float3 near_3 = metal::select(metal::min(_e17, _e18), metal::select(_e27, _e31, _e23), parallel);
     metal::float3 far_3 = metal::select(metal::max(_e17, _e18), metal::select(_e31, _e27, _e23), parallel);
-    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_5.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
+    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_6.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_6.tmax));
 }
 
 float bvh_mesh_enter(
-    Ray ray_6,
+    Ray ray_7,
     BvhNode n_1,
     float tmax_4,
     thread uint& F32_INF,
     thread uint& F32_NEG_INF
 ) {
-    metal::float2 _e5 = intersect_aabb(ray_6, n_1.min, n_1.max, F32_INF, F32_NEG_INF);
+    metal::float2 _e5 = intersect_aabb(ray_7, n_1.min, n_1.max, F32_INF, F32_NEG_INF);
     uint _e7 = F32_INF;
     return ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : as_type<float>(_e7);
 }
@@ -941,12 +949,12 @@ Triangle mesh_triangle_query(
 }
 
 Intersection intersect_triangle(
-    Ray ray_7,
+    Ray ray_8,
     Triangle tri,
     thread uint& F32_INF
 ) {
     metal::uint3 _e10 = metal::uint3(2139095040u);
-    metal::float3 dir_5 = metal::select(ray_7.dir, metal::float3(0.0), metal::abs(ray_7.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 dir_5 = metal::select(ray_8.dir, metal::float3(0.0), metal::abs(ray_8.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
     metal::float3 _e31 = metal::abs(dir_5);
     bool _e38 = _e31.y > _e31.x;
     uint kz_1 = (_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u);
@@ -959,13 +967,13 @@ Intersection intersect_triangle(
     float sx = dir_5[kx_1] / dz_1;
     float sy = dir_5[ky_1] / dz_1;
     float sz = 1.0 / dz_1;
-    metal::float3 _e62 = tri.v0_ - ray_7.origin;
+    metal::float3 _e62 = tri.v0_ - ray_8.origin;
     float _e68 = _e62[kx_1] - (sx * _e62[kz_1]);
     float _e69 = _e62[ky_1] - (sy * _e62[kz_1]);
-    metal::float3 _e71 = tri.v1_ - ray_7.origin;
+    metal::float3 _e71 = tri.v1_ - ray_8.origin;
     float _e77 = _e71[kx_1] - (sx * _e71[kz_1]);
     float _e78 = _e71[ky_1] - (sy * _e71[kz_1]);
-    metal::float3 _e80 = tri.v2_ - ray_7.origin;
+    metal::float3 _e80 = tri.v2_ - ray_8.origin;
     float _e86 = _e80[kx_1] - (sx * _e80[kz_1]);
     float _e87 = _e80[ky_1] - (sy * _e80[kz_1]);
     float u_1 = (_e86 * _e78) - (_e87 * _e77);
@@ -974,7 +982,7 @@ Intersection intersect_triangle(
     float det_1 = (u_1 + v_3) + w_1;
     float _e112 = 1.0 / det_1;
     float t_9 = (((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
-    bool hit_9 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax));
+    bool hit_9 = ((((metal::all((as_type<metal::uint3>(ray_8.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_8.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_8.tmin) && (t_9 <= ray_8.tmax));
     metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
     uint _e137 = F32_INF;
     return Intersection {hit_9 ? t_9 : as_type<float>(_e137), {}, hit_9 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_9 ? metal::float2(v_3 * _e112, w_1 * _e112) : metal::float2(0.0)};
@@ -982,7 +990,7 @@ Intersection intersect_triangle(
 
 Intersection bvh_mesh_intersect(
     BvhMesh g,
-    Ray ray_8,
+    Ray ray_9,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_10 const& nodes,
@@ -1000,7 +1008,7 @@ Intersection bvh_mesh_intersect(
     bool found = {};
     uint _e3 = F32_INF;
     best_1 = Intersection {as_type<float>(_e3), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
-    r_2 = ray_8;
+    r_2 = ray_9;
     stack = type_14 {};
     stack_t = type_15 {};
     sp_2 = 0u;
@@ -1122,14 +1130,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_9,
+    Ray ray_10,
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f_2 = ray_9.origin - s.center;
-    float a_6 = metal::dot(ray_9.dir, ray_9.dir);
-    float b_9 = -(metal::dot(f_2, ray_9.dir));
-    metal::float3 l_1 = f_2 + (ray_9.dir * metal::float3(b_9 / a_6));
+    metal::float3 f_2 = ray_10.origin - s.center;
+    float a_6 = metal::dot(ray_10.dir, ray_10.dir);
+    float b_9 = -(metal::dot(f_2, ray_10.dir));
+    metal::float3 l_1 = f_2 + (ray_10.dir * metal::float3(b_9 / a_6));
     float r2_ = s.radius * s.radius;
     float disc = a_6 * (r2_ - metal::dot(l_1, l_1));
     if (!((disc >= 0.0)) || !((a_6 > 0.0))) {
@@ -1141,17 +1149,17 @@ Intersection sphere_intersect(
     float t1_1 = q_2 / a_6;
     t = metal::min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_9.tmin))) {
+    if (!((_e52 >= ray_10.tmin))) {
         t = metal::max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
+    if (!(((_e57 >= ray_10.tmin) && (_e60 <= ray_10.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t;
-    metal::float3 _e82 = normalize_vec3f((ray_9.origin + (ray_9.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_10.origin + (ray_10.dir * metal::float3(_e76))) - s.center);
     float u_2 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv_1 = metal::float2(u_2, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t;
@@ -1161,7 +1169,7 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
-    Ray ray_10,
+    Ray ray_11,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_10 const& nodes,
@@ -1172,12 +1180,12 @@ Intersection dispatch_intersection(
     switch(type_id_1) {
         case 0u: {
             BvhMesh _e3 = load_BvhMesh(offset_4, params, _buffer_sizes);
-            Intersection _e4 = bvh_mesh_intersect(_e3, ray_10, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
+            Intersection _e4 = bvh_mesh_intersect(_e3, ray_11, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
-            Intersection _e6 = sphere_intersect(_e5, ray_10, F32_INF);
+            Intersection _e6 = sphere_intersect(_e5, ray_11, F32_INF);
             return _e6;
         }
         default: {
@@ -1189,7 +1197,7 @@ Intersection dispatch_intersection(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_11,
+    Ray ray_12,
     Candidate best_2,
     bool shadow_1,
     device type_5 const& params,
@@ -1203,12 +1211,12 @@ Candidate intersect_object(
 ) {
     Ray r_3 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_11);
+    Ray _e7 = to_object(inst_6, ray_12);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_3;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_12, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_3;
@@ -1218,7 +1226,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_8 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_11, c_8);
+        bool _e40 = accept(inst_6, ray_12, c_8);
         if (_e40) {
             return c_8;
         }
@@ -1301,7 +1309,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_12,
+    Ray ray_13,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -1313,9 +1321,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_12.origin, ray_12.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_13.origin, ray_13.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_12.origin + (ray_12.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_13.origin + (ray_13.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1356,7 +1364,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_12.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_13.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1443,53 +1451,27 @@ Ray sample_camera_ray(
     device type_17 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_13 = {};
+    Ray ray_14 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_13 = _e7;
-    ray_13.depth = 0u;
-    ray_13.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_13.origin;
+    ray_14 = _e7;
+    ray_14.depth = 0u;
+    ray_14.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_14.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, _buffer_sizes);
-    ray_13.medium = _e17;
-    Ray _e18 = ray_13;
+    ray_14.medium = _e17;
+    Ray _e18 = ray_14;
     return _e18;
 }
 
-metal::float3 safe_inverse(
-    metal::float3 d
+metal::float3 node_frame_bounds(
 ) {
-    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_6 * tiny, metal::abs(d) < tiny);
-    return metal::float3(1.0) / dd;
-}
-
-float slab(
-    metal::float3 lo_2,
-    metal::float3 hi_2,
-    metal::float3 origin_3,
-    metal::float3 inv_dir,
-    float tmin_1,
-    float tmax_5,
-    thread uint& F32_INF
-) {
-    metal::float3 t0_2 = (lo_2 - origin_3) * inv_dir;
-    metal::float3 t1_2 = (hi_2 - origin_3) * inv_dir;
-    metal::float3 near_4 = metal::min(t0_2, t1_2);
-    metal::float3 far_4 = metal::max(t0_2, t1_2);
-    float enter_1 = metal::max(metal::max(near_4.x, near_4.y), metal::max(near_4.z, tmin_1));
-    float exit_1 = metal::min(metal::min(far_4.x, far_4.y) * 1.0000005, metal::min(far_4.z * 1.0000005, tmax_5));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    uint _e30 = F32_INF;
-    return as_type<float>(_e30);
+    return metal::float3(65535.0);
 }
 
 Candidate intersect_scene(
-    Ray ray_14,
+    Ray ray_15,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1509,97 +1491,93 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_14.tmax);
+    Candidate _e7 = no_candidate(ray_15.tmax);
     best_3 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_3;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_14.dir);
     uint base_3 = frame_3.tlas_root;
-    GpuNode header_3 = nodes[base_3];
-    metal::float3 origin_4 = header_3.min;
-    metal::float3 scale_2 = header_3.max;
-    metal::float3 _e23 = node_frame_hi(header_3);
-    float _e27 = best_3.t;
-    float _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27, F32_INF);
-    uint _e30 = F32_INF;
-    if (_e28 == as_type<float>(_e30)) {
-        Candidate _e33 = best_3;
-        return _e33;
+    GpuNode header_4 = nodes[base_3];
+    BoxRay _e19 = header_box_ray(header_4, ray_15);
+    metal::float3 _e22 = node_frame_bounds();
+    float _e24 = best_3.t;
+    float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
+    uint _e29 = F32_INF;
+    if (_e27 == as_type<float>(_e29)) {
+        Candidate _e32 = best_3;
+        return _e32;
     }
-    metal::float3 _e34 = node_frame_hi(header_3);
-    BoxRay _e36 = box_ray(origin_4, scale_2, _e34 - origin_4, ray_14);
     sp_3 = 0u;
-    child_1 = header_3.a;
+    child_1 = header_4.a;
     uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            uint _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e55 = child_1;
-                Candidate _e58 = best_3;
-                Candidate _e59 = intersect_object(_e55 & NODE_FIRST_MASK, ray_14, _e58, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
-                best_3 = _e59;
-                uint _e61 = best_3.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    Candidate _e65 = best_3;
-                    return _e65;
+        uint _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            uint _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e51 = child_1;
+                Candidate _e54 = best_3;
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_15, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+                best_3 = _e55;
+                uint _e57 = best_3.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    Candidate _e61 = best_3;
+                    return _e61;
                 }
             }
         } else {
-            uint _e66 = child_1;
-            GpuNode n_10 = nodes[base_3 + _e66];
-            float _e72 = best_3.t;
-            metal::float2 _e73 = children_entry(n_10, _e36, _e72, F32_INF);
-            float tl_1 = _e73.x;
-            float tr_1 = _e73.y;
+            uint _e62 = child_1;
+            GpuNode n_10 = nodes[base_3 + _e62];
+            float _e68 = best_3.t;
+            metal::float2 _e69 = children_entry(n_10, _e19, _e68, F32_INF);
+            float tl_1 = _e69.x;
+            float tr_1 = _e69.y;
+            uint _e73 = F32_INF;
             uint _e77 = F32_INF;
-            uint _e81 = F32_INF;
-            if ((tl_1 < as_type<float>(_e77)) && (tr_1 < as_type<float>(_e81))) {
+            if ((tl_1 < as_type<float>(_e73)) && (tr_1 < as_type<float>(_e77))) {
                 near_1 = n_10.a;
                 far_1 = n_10.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_10.b;
                     far_1 = n_10.a;
                 }
-                uint _e92 = sp_3;
-                if (_e92 < TLAS_STACK) {
-                    uint _e95 = sp_3;
-                    uint _e96 = far_1;
-                    traversal_stack.inner[metal::min(_e95, 66u)] = _e96;
-                    uint _e101 = sp_3;
-                    sp_3 = _e101 + 1u;
+                uint _e88 = sp_3;
+                if (_e88 < TLAS_STACK) {
+                    uint _e91 = sp_3;
+                    uint _e92 = far_1;
+                    traversal_stack.inner[metal::min(_e91, 66u)] = _e92;
+                    uint _e97 = sp_3;
+                    sp_3 = _e97 + 1u;
                 }
-                uint _e104 = near_1;
-                child_1 = _e104;
+                uint _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            uint _e106 = F32_INF;
-            if (tl_1 < as_type<float>(_e106)) {
+            uint _e102 = F32_INF;
+            if (tl_1 < as_type<float>(_e102)) {
                 child_1 = n_10.a;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if (tr_1 < as_type<float>(_e111)) {
+            uint _e107 = F32_INF;
+            if (tr_1 < as_type<float>(_e107)) {
                 child_1 = n_10.b;
                 continue;
             }
         }
-        uint _e116 = sp_3;
-        metal::uint2 _e117 = pop(0u, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e112 = sp_3;
+        metal::uint2 _e113 = pop(0u, _e112, traversal_stack);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_3 = _e117.y;
+        child_1 = _e113.x;
+        sp_3 = _e113.y;
     }
-    Candidate _e123 = best_3;
-    return _e123;
+    Candidate _e119 = best_3;
+    return _e119;
 }
 
 Skybox load_Skybox(
@@ -1715,11 +1693,11 @@ metal::float4 sample_texture(
     uint _e6 = params[t_2 + 1u];
     int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_2 + 2u];
-    int hi_3 = static_cast<int>(metal::max(_e14, 1u));
+    int hi_2 = static_cast<int>(metal::max(_e14, 1u));
     uint sampler = params[t_2 + 4u];
     uint mu = sampler & TEXTURE_WRAP_MASK;
     uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
-    metal::float2 q_5 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_3));
+    metal::float2 q_5 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
     metal::float2 p_8 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_5) : (q_5 - metal::float2(0.5));
     metal::float2 f_3 = metal::floor(p_8);
     metal::float2 fr = p_8 - f_3;
@@ -1727,7 +1705,7 @@ metal::float4 sample_texture(
     int _e49 = i32_from_f32_(f_3.y);
     metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
     metal::uint2 xs = static_cast<metal::uint2>(_e50);
-    metal::int2 _e52 = wrap_texel_pair(_e49, hi_3, mv);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_2, mv);
     metal::uint2 ys = static_cast<metal::uint2>(_e52);
     uint x0_ = xs.x;
     uint x1_ = xs.y;
@@ -1744,12 +1722,12 @@ metal::float4 sample_texture(
 
 metal::float3 skybox(
     Skybox b_7,
-    Ray ray_15,
+    Ray ray_16,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_15.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_16.dir);
     bool pole = (_e3.x == 0.0) && (_e3.z == 0.0);
     float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_7.rotation) * 0.017453292519943295474);
     float latitude = metal::acos(metal::min(metal::max(_e3.y, -1.0), 1.0));
@@ -1761,18 +1739,18 @@ metal::float3 skybox(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_16,
+    Ray ray_17,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Skybox _e2 = load_Skybox(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = skybox(_e2, ray_16, params, texels, _buffer_sizes);
+    metal::float3 _e3 = skybox(_e2, ray_17, params, texels, _buffer_sizes);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_17,
+    Ray ray_18,
     constant FrameUniforms& frame,
     device type_5 const& params,
     device type_5 const& texels,
@@ -1782,7 +1760,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17, params, texels, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18, params, texels, _buffer_sizes);
     return _e9;
 }
 
@@ -1798,10 +1776,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1861,8 +1839,8 @@ metal::float3 offset_origin(
     metal::float3 n_5,
     float error
 ) {
-    float d_5 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
-    metal::float3 offset_14 = n_5 * metal::float3(d_5);
+    float d_4 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
+    metal::float3 offset_14 = n_5 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_14, offset_14);
     return _e17;
 }
@@ -1876,7 +1854,7 @@ Ray shadow_ray(
     thread float& hit_error
 ) {
     metal::float3 n_6 = {};
-    float tmax_6 = {};
+    float tmax_5 = {};
     n_6 = normal_1;
     metal::float3 _e5 = n_6;
     if (metal::dot(dir_1, _e5) < 0.0) {
@@ -1889,16 +1867,16 @@ Ray shadow_ray(
     metal::float3 _e22 = n_6;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
-    tmax_6 = as_type<float>(_e25);
+    tmax_5 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
         metal::float3 light = position + (dir_1 * metal::float3(dist));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
+        float dd = metal::dot(dir_1, dir_1);
+        float along_1 = metal::dot(light - _e23, dir_1) / dd;
         metal::float3 l_2 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
-        tmax_6 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
+        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd));
     }
-    float _e59 = tmax_6;
+    float _e59 = tmax_5;
     return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
 }
 
@@ -2013,7 +1991,7 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2030,7 +2008,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e3 = shading_normal(ray_19, hit_2);
+    metal::float3 _e3 = shading_normal(ray_20, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_5 = 0u;
@@ -2060,7 +2038,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -2077,12 +2055,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_10, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_20, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_21, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_21,
+    Ray ray_22,
     Candidate c_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2099,15 +2077,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_21, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_22, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_22,
+    Ray ray_23,
     float t_3,
     metal::float3 radiance
 ) {
@@ -2115,7 +2093,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_23,
+    Ray ray_24,
     float t_4,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2124,21 +2102,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_23.medium == 0u) {
+    if (ray_24.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_23.medium - 1u];
+    GpuInstance inst_9 = instances[ray_24.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_4, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_24,
+    Ray ray_25,
     Hit hit_4
 ) {
     return;
@@ -2195,7 +2173,7 @@ metal::float3 trace(
     float t_5 = {};
     type_21 stack_1 = {};
     uint depth = {};
-    Ray ray_25 = {};
+    Ray ray_26 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2233,7 +2211,7 @@ metal::float3 trace(
     }
     stack_1 = type_21 {};
     depth = 0u;
-    ray_25 = camera_ray;
+    ray_26 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2252,10 +2230,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_26;
             Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_26;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2392,7 +2370,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_25 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_26 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack_1.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -380,19 +380,19 @@ fn sobol_second_reversed(i: u32) -> u32 {
 fn rand_next() -> f32 {
     var x_2: u32;
 
-    let d_1 = rng_state;
-    rng_state = (d_1 + 1u);
+    let d = rng_state;
+    rng_state = (d + 1u);
     let _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
-    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e16 = pcg_hash((_e10 ^ ((d >> 1u) * 2654435769u)));
     let _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
     let i_7 = reverseBits(_e24);
     x_2 = i_7;
-    if ((d_1 & 1u) != 0u) {
+    if ((d & 1u) != 0u) {
         let _e31 = sobol_second_reversed(i_7);
         x_2 = _e31;
     }
-    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
     let _e45 = x_2;
     let _e46 = laine_karras(_e45, scramble);
     return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
@@ -443,27 +443,27 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_2 = vec4<f32>(ray.dir, 0f);
+    let d_1 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     let _e25 = r;
     return _e25;
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_3);
+    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_2);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_3[min(kz, 2u)];
+    let dz = d_2[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
@@ -478,15 +478,21 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
 fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
     let m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_3) >> 23u) & 255u), 1u), 253u);
-    let d_4 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
+    let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
     let unit = bitcast<f32>((e << 23u));
     let floor_ = vec3(0.0000000000009094947f);
-    let s_4 = select(vec3(1f), vec3(-1f), (d_4 < vec3(0f)));
-    let inv = (vec3(1f) / select(d_4, (s_4 * floor_), (abs(d_4) < floor_)));
+    let s_4 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
+    let inv = (vec3(1f) / select(d_3, (s_4 * floor_), (abs(d_3) < floor_)));
     let rel = (origin_1 - ray_2.origin);
     let start = (rel * inv);
     let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
     return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+}
+
+fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
+    let _e4 = node_frame_hi(header_1);
+    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
+    return _e7;
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -522,7 +528,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_7, (v_2 * rcp), (w * rcp)), hit_8);
 }
 
-fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -574,7 +580,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -583,99 +589,98 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_4);
+    let _e7 = prepare_triangle_ray(ray_5);
     let base_1 = inst_2.blas_root;
-    let header_1 = nodes[base_1];
-    let _e14 = node_frame_hi(header_1);
-    let _e17 = box_ray(header_1.min, header_1.max, (_e14 - header_1.min), ray_4);
+    let header_2 = nodes[base_1];
+    let _e12 = header_box_ray(header_2, ray_5);
     sp_1 = 0u;
-    child = header_1.a;
+    child = header_2.a;
     loop {
-        let _e22 = child;
-        if ((_e22 & NODE_LEAF_BIT) != 0u) {
-            let _e27 = child;
-            let count_1 = ((_e27 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-            let _e34 = child;
-            let first = (_e34 & NODE_FIRST_MASK);
+        let _e17 = child;
+        if ((_e17 & NODE_LEAF_BIT) != 0u) {
+            let _e22 = child;
+            let count_1 = ((_e22 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            let _e29 = child;
+            let first = (_e29 & NODE_FIRST_MASK);
             k = 0u;
             loop {
-                let _e39 = k;
-                if (_e39 >= count_1) {
+                let _e34 = k;
+                if (_e34 >= count_1) {
                     break;
                 }
-                let _e43 = k;
-                let prim = ((inst_2.triangle_offset + first) + _e43);
-                let _e47 = best.t;
-                let _e51 = hit_triangle(_e7, prim, ray_4.tmin, _e47, (shadow && !(HAS_ANY_HIT)));
-                let _e54 = F32_INF;
-                if (_e51.x < bitcast<f32>(_e54)) {
-                    let _e63 = triangles[((prim * 3u) + 1u)];
-                    let tag = bitcast<u32>(_e63.w);
+                let _e38 = k;
+                let prim = ((inst_2.triangle_offset + first) + _e38);
+                let _e42 = best.t;
+                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e49 = F32_INF;
+                if (_e46.x < bitcast<f32>(_e49)) {
+                    let _e58 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_7 = Candidate(_e51.x, owner, prim, _e51.yz, vec3(0f));
-                    let _e78 = accept(inst_2, world_ray, c_7);
-                    if _e78 {
+                    let c_7 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_7);
+                    if _e73 {
                         best = c_7;
                         if shadow {
-                            let _e79 = best;
-                            return _e79;
+                            let _e74 = best;
+                            return _e74;
                         }
                     }
                 }
                 continuing {
-                    let _e80 = k;
-                    k = (_e80 + 1u);
+                    let _e75 = k;
+                    k = (_e75 + 1u);
                 }
             }
         } else {
-            let _e83 = child;
-            let n_8 = nodes[(base_1 + _e83)];
-            let _e89 = best.t;
-            let _e90 = children_entry(n_8, _e17, _e89);
-            let tl = _e90.x;
-            let tr = _e90.y;
-            let _e94 = F32_INF;
-            let _e98 = F32_INF;
-            if ((tl < bitcast<f32>(_e94)) && (tr < bitcast<f32>(_e98))) {
+            let _e78 = child;
+            let n_8 = nodes[(base_1 + _e78)];
+            let _e84 = best.t;
+            let _e85 = children_entry(n_8, _e12, _e84);
+            let tl = _e85.x;
+            let tr = _e85.y;
+            let _e89 = F32_INF;
+            let _e93 = F32_INF;
+            if ((tl < bitcast<f32>(_e89)) && (tr < bitcast<f32>(_e93))) {
                 near = n_8.a;
                 far = n_8.b;
                 if ((tr < tl) != shadow) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                let _e110 = sp_1;
-                if (_e110 < BLAS_STACK) {
-                    let _e114 = sp_1;
-                    let _e116 = far;
-                    traversal_stack[min((TLAS_STACK + _e114), 66u)] = _e116;
-                    let _e121 = sp_1;
-                    sp_1 = (_e121 + 1u);
+                let _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    let _e109 = sp_1;
+                    let _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 66u)] = _e111;
+                    let _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                let _e124 = near;
-                child = _e124;
+                let _e119 = near;
+                child = _e119;
                 continue;
             }
-            let _e126 = F32_INF;
-            if (tl < bitcast<f32>(_e126)) {
+            let _e121 = F32_INF;
+            if (tl < bitcast<f32>(_e121)) {
                 child = n_8.a;
                 continue;
             }
-            let _e131 = F32_INF;
-            if (tr < bitcast<f32>(_e131)) {
+            let _e126 = F32_INF;
+            if (tr < bitcast<f32>(_e126)) {
                 child = n_8.b;
                 continue;
             }
         }
-        let _e136 = sp_1;
-        let _e137 = pop(TLAS_STACK, _e136);
-        if (_e137.x == NO_HIT) {
+        let _e131 = sp_1;
+        let _e132 = pop(TLAS_STACK, _e131);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e137.x;
-        sp_1 = _e137.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    let _e143 = best;
-    return _e143;
+    let _e138 = best;
+    return _e138;
 }
 
 fn load_BvhMesh(offset_2: u32) -> BvhMesh {
@@ -690,11 +695,11 @@ fn mesh_node_query(m: u32, i_1: u32) -> BvhNode {
     var q_1: vec3<u32>;
 
     let base_2 = params[m];
-    let header_2 = nodes[base_2];
-    lo_1 = header_2.min;
-    let _e10 = node_frame_hi(header_2);
+    let header_3 = nodes[base_2];
+    lo_1 = header_3.min;
+    let _e10 = node_frame_hi(header_3);
     hi_1 = _e10;
-    reference = header_2.a;
+    reference = header_3.a;
     if (i_1 >= 2u) {
         let n_9 = nodes[(base_2 + (i_1 >> 1u))];
         q_1 = bitcast<vec3<u32>>(n_9.min);
@@ -705,11 +710,11 @@ fn mesh_node_query(m: u32, i_1: u32) -> BvhNode {
         }
         let _e35 = q_1;
         let _e36 = node_box_lo(_e35);
-        let _e37 = node_point(header_2.min, header_2.max, _e36);
+        let _e37 = node_point(header_3.min, header_3.max, _e36);
         lo_1 = _e37;
         let _e40 = q_1;
         let _e41 = node_box_hi(_e40);
-        let _e42 = node_point(header_2.min, header_2.max, _e41);
+        let _e42 = node_point(header_3.min, header_3.max, _e41);
         hi_1 = _e42;
     }
     let _e43 = reference;
@@ -730,24 +735,24 @@ fn mesh_node_query(m: u32, i_1: u32) -> BvhNode {
     return BvhNode(_e73, _e74, (_e75 & NODE_FIRST_MASK), count_2);
 }
 
-fn intersect_aabb(ray_5: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
-    let parallel = (abs(ray_5.dir) < vec3(0.000000000000000000000000000000000000011754944f));
+fn intersect_aabb(ray_6: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
+    let parallel = (abs(ray_6.dir) < vec3(0.000000000000000000000000000000000000011754944f));
     let _e12 = vec3(1f);
-    let inv_dir_1 = (_e12 / select(ray_5.dir, _e12, parallel));
-    let _e17 = ((min_ - ray_5.origin) * inv_dir_1);
-    let _e18 = ((max_ - ray_5.origin) * inv_dir_1);
-    let _e23 = ((min_ <= ray_5.origin) & (ray_5.origin <= max_));
+    let inv_dir = (_e12 / select(ray_6.dir, _e12, parallel));
+    let _e17 = ((min_ - ray_6.origin) * inv_dir);
+    let _e18 = ((max_ - ray_6.origin) * inv_dir);
+    let _e23 = ((min_ <= ray_6.origin) & (ray_6.origin <= max_));
     let _e25 = F32_INF;
     let _e27 = vec3(bitcast<f32>(_e25));
     let _e29 = F32_NEG_INF;
     let _e31 = vec3(bitcast<f32>(_e29));
     let near_3 = select(min(_e17, _e18), select(_e27, _e31, _e23), parallel);
     let far_3 = select(max(_e17, _e18), select(_e31, _e27, _e23), parallel);
-    return vec2<f32>(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
+    return vec2<f32>(max(max(max(near_3.x, near_3.y), near_3.z), ray_6.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_6.tmax));
 }
 
-fn bvh_mesh_enter(ray_6: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
-    let _e5 = intersect_aabb(ray_6, n_1.min, n_1.max);
+fn bvh_mesh_enter(ray_7: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
+    let _e5 = intersect_aabb(ray_7, n_1.min, n_1.max);
     let _e7 = F32_INF;
     return select(bitcast<f32>(_e7), _e5.x, ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)));
 }
@@ -761,9 +766,9 @@ fn mesh_triangle_query(m_1: u32, i_2: u32) -> Triangle {
     return Triangle(_e12.xyz, _e20.xyz, _e28.xyz);
 }
 
-fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
+fn intersect_triangle(ray_8: Ray, tri: Triangle) -> Intersection {
     let _e10 = vec3(2139095040u);
-    let dir_5 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let dir_5 = select(ray_8.dir, vec3(0f), (abs(ray_8.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
     let _e31 = abs(dir_5);
     let _e38 = (_e31.y > _e31.x);
     let kz_1 = select(select(0u, 1u, _e38), 2u, (_e31.z > select(_e31.x, _e31.y, _e38)));
@@ -776,13 +781,13 @@ fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let sx = (dir_5[kx_1] / dz_1);
     let sy = (dir_5[ky_1] / dz_1);
     let sz = (1f / dz_1);
-    let _e62 = (tri.v0_ - ray_7.origin);
+    let _e62 = (tri.v0_ - ray_8.origin);
     let _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
     let _e69 = (_e62[ky_1] - (sy * _e62[kz_1]));
-    let _e71 = (tri.v1_ - ray_7.origin);
+    let _e71 = (tri.v1_ - ray_8.origin);
     let _e77 = (_e71[kx_1] - (sx * _e71[kz_1]));
     let _e78 = (_e71[ky_1] - (sy * _e71[kz_1]));
-    let _e80 = (tri.v2_ - ray_7.origin);
+    let _e80 = (tri.v2_ - ray_8.origin);
     let _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     let _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     let u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -791,13 +796,13 @@ fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let det_1 = ((u_1 + v_3) + w_1);
     let _e112 = (1f / det_1);
     let t_9 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    let hit_9 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_3 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_3 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
+    let hit_9 = (((((all(((bitcast<vec3<u32>>(ray_8.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_8.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_3 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_3 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_9 >= ray_8.tmin) && (t_9 <= ray_8.tmax)));
     let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     let _e137 = F32_INF;
     return Intersection(select(bitcast<f32>(_e137), t_9, hit_9), select(vec3<f32>(0f, 0f, 1f), _e132, hit_9), select(vec2(0f), vec2<f32>((v_3 * _e112), (w_1 * _e112)), hit_9));
 }
 
-fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
+fn bvh_mesh_intersect(g: BvhMesh, ray_9: Ray) -> Intersection {
     var best_1: Intersection;
     var r_2: Ray;
     var stack: array<u32, 64>;
@@ -809,7 +814,7 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
 
     let _e3 = F32_INF;
     best_1 = Intersection(bitcast<f32>(_e3), vec3<f32>(0f, 0f, 1f), vec2<f32>());
-    r_2 = ray_8;
+    r_2 = ray_9;
     stack = array<u32, 64>();
     stack_t = array<f32, 64>();
     sp_2 = 0u;
@@ -914,13 +919,13 @@ fn load_Sphere(offset_3: u32) -> Sphere {
     return Sphere(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24));
 }
 
-fn sphere_intersect(s: Sphere, ray_9: Ray) -> Intersection {
+fn sphere_intersect(s: Sphere, ray_10: Ray) -> Intersection {
     var t: f32;
 
-    let f_2 = (ray_9.origin - s.center);
-    let a_6 = dot(ray_9.dir, ray_9.dir);
-    let b_9 = -(dot(f_2, ray_9.dir));
-    let l_1 = (f_2 + (ray_9.dir * vec3((b_9 / a_6))));
+    let f_2 = (ray_10.origin - s.center);
+    let a_6 = dot(ray_10.dir, ray_10.dir);
+    let b_9 = -(dot(f_2, ray_10.dir));
+    let l_1 = (f_2 + (ray_10.dir * vec3((b_9 / a_6))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if (!((disc >= 0f)) || !((a_6 > 0f))) {
@@ -932,33 +937,33 @@ fn sphere_intersect(s: Sphere, ray_9: Ray) -> Intersection {
     let t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     let _e52 = t;
-    if !((_e52 >= ray_9.tmin)) {
+    if !((_e52 >= ray_10.tmin)) {
         t = max(t0_1, t1_1);
     }
     let _e57 = t;
     let _e60 = t;
-    if !(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax))) {
+    if !(((_e57 >= ray_10.tmin) && (_e60 <= ray_10.tmax))) {
         let _e66 = F32_INF;
         return Intersection(bitcast<f32>(_e66), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let _e76 = t;
-    let _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * vec3(_e76))) - s.center));
+    let _e82 = normalize_vec3f(((ray_10.origin + (ray_10.dir * vec3(_e76))) - s.center));
     let u_2 = select((0.5f + (atan2(_e82.z, -(_e82.x)) / TAU)), 0.5f, ((_e82.x == 0f) && (_e82.z == 0f)));
     let uv_1 = vec2<f32>(u_2, (acos(min(max(_e82.y, -1f), 1f)) * INV_PI));
     let _e109 = t;
     return Intersection(_e109, _e82, uv_1);
 }
 
-fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_10: Ray) -> Intersection {
+fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_11: Ray) -> Intersection {
     switch type_id_1 {
         case 0u: {
             let _e3 = load_BvhMesh(offset_4);
-            let _e4 = bvh_mesh_intersect(_e3, ray_10);
+            let _e4 = bvh_mesh_intersect(_e3, ray_11);
             return _e4;
         }
         case 1u: {
             let _e5 = load_Sphere(offset_4);
-            let _e6 = sphere_intersect(_e5, ray_10);
+            let _e6 = sphere_intersect(_e5, ray_11);
             return _e6;
         }
         default: {
@@ -967,16 +972,16 @@ fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_10: Ray) -> Intersec
     return Intersection();
 }
 
-fn intersect_object(slot_2: u32, ray_11: Ray, best_2: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_12: Ray, best_2: Candidate, shadow_1: bool) -> Candidate {
     var r_3: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_11);
+    let _e7 = to_object(inst_6, ray_12);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_3;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_12, _e14, best_2, shadow_1);
         return _e15;
     }
     let _e18 = r_3;
@@ -986,7 +991,7 @@ fn intersect_object(slot_2: u32, ray_11: Ray, best_2: Candidate, shadow_1: bool)
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
         let c_8 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_6, ray_11, c_8);
+        let _e40 = accept(inst_6, ray_12, c_8);
         if _e40 {
             return c_8;
         }
@@ -1048,15 +1053,15 @@ fn normal_to_world(inst_5: GpuInstance, n_3: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_12: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_13: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_12.origin, (ray_12.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_13.origin, (ray_13.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_12.origin + (ray_12.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_13.origin + (ray_13.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1097,7 +1102,7 @@ fn finish_hit(ray_12: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_12.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_13.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -1149,43 +1154,26 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_13: Ray;
+    var ray_14: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_13 = _e7;
-    ray_13.depth = 0u;
-    ray_13.kind = RAY_CAMERA;
-    let _e15 = ray_13.origin;
+    ray_14 = _e7;
+    ray_14.depth = 0u;
+    ray_14.kind = RAY_CAMERA;
+    let _e15 = ray_14.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_13.medium = _e17;
-    let _e18 = ray_13;
+    ray_14.medium = _e17;
+    let _e18 = ray_14;
     return _e18;
 }
 
-fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
-    let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_6 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_6 * tiny), (abs(d) < tiny));
-    return (vec3(1f) / dd);
+fn node_frame_bounds() -> vec3<f32> {
+    return vec3(65535f);
 }
 
-fn slab(lo_2: vec3<f32>, hi_2: vec3<f32>, origin_3: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_5: f32) -> f32 {
-    let t0_2 = ((lo_2 - origin_3) * inv_dir);
-    let t1_2 = ((hi_2 - origin_3) * inv_dir);
-    let near_4 = min(t0_2, t1_2);
-    let far_4 = max(t0_2, t1_2);
-    let enter_1 = max(max(near_4.x, near_4.y), max(near_4.z, tmin_1));
-    let exit_1 = min((min(far_4.x, far_4.y) * 1.0000005f), min((far_4.z * 1.0000005f), tmax_5));
-    if (enter_1 <= exit_1) {
-        return enter_1;
-    }
-    let _e30 = F32_INF;
-    return bitcast<f32>(_e30);
-}
-
-fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
     var best_3: Candidate;
     var sp_3: u32;
     var child_1: u32;
@@ -1194,94 +1182,90 @@ fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_14.tmax);
+    let _e7 = no_candidate(ray_15.tmax);
     best_3 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         let _e14 = best_3;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_14.dir);
     let base_3 = frame_3.tlas_root;
-    let header_3 = nodes[base_3];
-    let origin_4 = header_3.min;
-    let scale_2 = header_3.max;
-    let _e23 = node_frame_hi(header_3);
-    let _e27 = best_3.t;
-    let _e28 = slab(origin_4, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
-    let _e30 = F32_INF;
-    if (_e28 == bitcast<f32>(_e30)) {
-        let _e33 = best_3;
-        return _e33;
+    let header_4 = nodes[base_3];
+    let _e19 = header_box_ray(header_4, ray_15);
+    let _e22 = node_frame_bounds();
+    let _e24 = best_3.t;
+    let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
+    let _e29 = F32_INF;
+    if (_e27 == bitcast<f32>(_e29)) {
+        let _e32 = best_3;
+        return _e32;
     }
-    let _e34 = node_frame_hi(header_3);
-    let _e36 = box_ray(origin_4, scale_2, (_e34 - origin_4), ray_14);
     sp_3 = 0u;
-    child_1 = header_3.a;
+    child_1 = header_4.a;
     loop {
-        let _e41 = child_1;
-        if ((_e41 & NODE_LEAF_BIT) != 0u) {
-            let _e46 = child_1;
-            if (((_e46 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                let _e55 = child_1;
-                let _e58 = best_3;
-                let _e59 = intersect_object((_e55 & NODE_FIRST_MASK), ray_14, _e58, shadow_2);
-                best_3 = _e59;
-                let _e61 = best_3.slot;
-                if (shadow_2 && (_e61 != NO_HIT)) {
-                    let _e65 = best_3;
-                    return _e65;
+        let _e37 = child_1;
+        if ((_e37 & NODE_LEAF_BIT) != 0u) {
+            let _e42 = child_1;
+            if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e51 = child_1;
+                let _e54 = best_3;
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                best_3 = _e55;
+                let _e57 = best_3.slot;
+                if (shadow_2 && (_e57 != NO_HIT)) {
+                    let _e61 = best_3;
+                    return _e61;
                 }
             }
         } else {
-            let _e66 = child_1;
-            let n_10 = nodes[(base_3 + _e66)];
-            let _e72 = best_3.t;
-            let _e73 = children_entry(n_10, _e36, _e72);
-            let tl_1 = _e73.x;
-            let tr_1 = _e73.y;
+            let _e62 = child_1;
+            let n_10 = nodes[(base_3 + _e62)];
+            let _e68 = best_3.t;
+            let _e69 = children_entry(n_10, _e19, _e68);
+            let tl_1 = _e69.x;
+            let tr_1 = _e69.y;
+            let _e73 = F32_INF;
             let _e77 = F32_INF;
-            let _e81 = F32_INF;
-            if ((tl_1 < bitcast<f32>(_e77)) && (tr_1 < bitcast<f32>(_e81))) {
+            if ((tl_1 < bitcast<f32>(_e73)) && (tr_1 < bitcast<f32>(_e77))) {
                 near_1 = n_10.a;
                 far_1 = n_10.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_10.b;
                     far_1 = n_10.a;
                 }
-                let _e92 = sp_3;
-                if (_e92 < TLAS_STACK) {
-                    let _e95 = sp_3;
-                    let _e96 = far_1;
-                    traversal_stack[min(_e95, 66u)] = _e96;
-                    let _e101 = sp_3;
-                    sp_3 = (_e101 + 1u);
+                let _e88 = sp_3;
+                if (_e88 < TLAS_STACK) {
+                    let _e91 = sp_3;
+                    let _e92 = far_1;
+                    traversal_stack[min(_e91, 66u)] = _e92;
+                    let _e97 = sp_3;
+                    sp_3 = (_e97 + 1u);
                 }
-                let _e104 = near_1;
-                child_1 = _e104;
+                let _e100 = near_1;
+                child_1 = _e100;
                 continue;
             }
-            let _e106 = F32_INF;
-            if (tl_1 < bitcast<f32>(_e106)) {
+            let _e102 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e102)) {
                 child_1 = n_10.a;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (tr_1 < bitcast<f32>(_e111)) {
+            let _e107 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e107)) {
                 child_1 = n_10.b;
                 continue;
             }
         }
-        let _e116 = sp_3;
-        let _e117 = pop(0u, _e116);
-        if (_e117.x == NO_HIT) {
+        let _e112 = sp_3;
+        let _e113 = pop(0u, _e112);
+        if (_e113.x == NO_HIT) {
             break;
         }
-        child_1 = _e117.x;
-        sp_3 = _e117.y;
+        child_1 = _e113.x;
+        sp_3 = _e113.y;
     }
-    let _e123 = best_3;
-    return _e123;
+    let _e119 = best_3;
+    return _e119;
 }
 
 fn load_Skybox(offset_5: u32) -> Skybox {
@@ -1362,11 +1346,11 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_2 + 1u)];
     let wi = i32(max(_e6, 1u));
     let _e14 = params[(t_2 + 2u)];
-    let hi_3 = i32(max(_e14, 1u));
+    let hi_2 = i32(max(_e14, 1u));
     let sampler_ = params[(t_2 + 4u)];
     let mu = (sampler_ & TEXTURE_WRAP_MASK);
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    let q_5 = (uv * vec2<f32>(f32(wi), f32(hi_3)));
+    let q_5 = (uv * vec2<f32>(f32(wi), f32(hi_2)));
     let p_8 = select((q_5 - vec2(0.5f)), floor(q_5), ((sampler_ & TEXTURE_NEAREST) != 0u));
     let f_3 = floor(p_8);
     let fr = (p_8 - f_3);
@@ -1374,7 +1358,7 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e49 = i32_from_f32_(f_3.y);
     let _e50 = wrap_texel_pair(_e47, wi, mu);
     let xs = vec2<u32>(_e50);
-    let _e52 = wrap_texel_pair(_e49, hi_3, mv);
+    let _e52 = wrap_texel_pair(_e49, hi_2, mv);
     let ys = vec2<u32>(_e52);
     let x0_ = xs.x;
     let x1_ = xs.y;
@@ -1389,8 +1373,8 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     return mix(a_8, b_11, vec4(fr.y));
 }
 
-fn skybox(b_7: Skybox, ray_15: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_15.dir);
+fn skybox(b_7: Skybox, ray_16: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_16.dir);
     let pole = ((_e3.x == 0f) && (_e3.z == 0f));
     let longitude = (select(atan2(_e3.x, -(_e3.z)), 0f, pole) - radians(b_7.rotation));
     let latitude = acos(min(max(_e3.y, -1f), 1f));
@@ -1399,18 +1383,18 @@ fn skybox(b_7: Skybox, ray_15: Ray) -> vec3<f32> {
     return (_e34.xyz * vec3(b_7.intensity));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_16: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_17: Ray) -> vec3<f32> {
     let _e2 = load_Skybox(offset_6);
-    let _e3 = skybox(_e2, ray_16);
+    let _e3 = skybox(_e2, ray_17);
     return _e3;
 }
 
-fn miss(ray_17: Ray) -> vec3<f32> {
+fn miss(ray_18: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
     return _e9;
 }
 
@@ -1421,8 +1405,8 @@ fn load_Lambert(offset_7: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_18: Ray, hit_1: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
+fn shading_normal(ray_19: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
     return faceForward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1465,15 +1449,15 @@ fn step_toward(x_5: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
 }
 
 fn offset_origin(p_5: vec3<f32>, n_5: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_5 = ((2f * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
-    let offset_14 = (n_5 * vec3(d_5));
+    let d_4 = ((2f * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    let offset_14 = (n_5 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_14), offset_14);
     return _e17;
 }
 
 fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_6: vec3<f32>;
-    var tmax_6: f32;
+    var tmax_5: f32;
 
     n_6 = normal_1;
     let _e5 = n_6;
@@ -1487,16 +1471,16 @@ fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: 
     let _e22 = n_6;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
-    tmax_6 = bitcast<f32>(_e25);
+    tmax_5 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
         let light = (position + (dir_1 * vec3(dist)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light - _e23), dir_1) / dd_1);
+        let dd = dot(dir_1, dir_1);
+        let along_1 = (dot((light - _e23), dir_1) / dd);
         let l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
-        tmax_6 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
+        tmax_5 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd)));
     }
-    let _e59 = tmax_6;
+    let _e59 = tmax_5;
     return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
@@ -1544,11 +1528,11 @@ fn sample_light_query(i_4: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn lambert_shade(m_2: Lambert, ray_19: Ray, hit_2: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_20: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
-    let _e3 = shading_normal(ray_19, hit_2);
+    let _e3 = shading_normal(ray_20, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_5 = 0u;
@@ -1570,39 +1554,39 @@ fn lambert_shade(m_2: Lambert, ray_19: Ray, hit_2: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_20: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_21: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_10);
-    let _e4 = lambert_shade(_e3, ray_20, hit_3);
+    let _e4 = lambert_shade(_e3, ray_21, hit_3);
     return _e4;
 }
 
-fn shade_direct(ray_21: Ray, c_3: Candidate) -> vec3<f32> {
+fn shade_direct(ray_22: Ray, c_3: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_21, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_22, c_3);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_22: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_23: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_23: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_24: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_23.medium == 0u) {
+    if (ray_24.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_23.medium - 1u)];
+    let inst_9 = instances[(ray_24.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_4, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_24: Ray, hit_4: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_25: Ray, hit_4: Hit) {
     return;
 }
 
@@ -1630,7 +1614,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_5: f32;
     var stack_1: array<Frame, 4>;
     var depth: u32;
-    var ray_25: Ray;
+    var ray_26: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1669,7 +1653,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack_1 = array<Frame, 4>();
     depth = 0u;
-    ray_25 = camera_ray;
+    ray_26 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1685,10 +1669,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_25;
+            let _e67 = ray_26;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_25;
+            let _e70 = ray_26;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1820,7 +1804,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_10, _e283, dir_7);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_25 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_26 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;
