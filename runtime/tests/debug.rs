@@ -65,7 +65,9 @@ fn compile(dir: &std::path::Path, debug: DebugMode) -> CompiledScene {
     )
 }
 
-/// The kernel's `safe_inverse`.
+/// `1 / d` with components below `1e-30` replaced by `±1e-30`, for the reference's slab test (the
+/// kernel's own box test, `box_ray`'s padded one in the BVH's frame, visits the same nodes on
+/// these rays: the test compares the counts).
 fn safe_inverse(d: [f32; 3]) -> [f32; 3] {
     d.map(|c| {
         let s = if c < 0.0 { -1.0 } else { 1.0 };
@@ -74,7 +76,7 @@ fn safe_inverse(d: [f32; 3]) -> [f32; 3] {
     })
 }
 
-/// The kernel's `slab` for a box given by its corners: entry distance, or `None` for a miss
+/// The slab test of a box given by its corners: entry distance, or `None` for a miss
 /// within `[tmin, tmax]`.
 fn slab_box(
     min: [f32; 3],
