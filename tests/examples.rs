@@ -408,7 +408,6 @@ fn render(gpu: &Gpu, name: &str, file: &SceneFile, assets: &[(&str, &str)]) -> L
     }
     let compiled = file.compile(&dir);
     let (image, _) = common::scene::render(gpu, &compiled, RenderOptions::default(), name);
-    let _ = std::fs::remove_dir_all(&dir);
     image
 }
 

@@ -88,7 +88,6 @@ fn render_reports_kernels_and_the_disk_cache_on_a_second_run() {
         .map(|d| d.filter_map(Result::ok).map(|e| e.path()).collect())
         .unwrap_or_default();
     assert!(files.len() <= 1, "{files:?}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `rtc render` of the small scene at 8x8 to `name` with `extra` arguments, and Mesa's variable
@@ -174,7 +173,6 @@ fn render_sets_llvmpipe_width_where_it_helps_unless_the_user_did() {
     if lavapipe {
         assert!(summary_line(&t, "adapter: ").contains("256 bits"), "{t}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `rtc render` of the small scene at 8x8 to `name` with `extra` arguments and `GALLIVM_PERF` as
@@ -251,7 +249,6 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
         summary_line(&t, "host: ").ends_with("GALLIVM_PERF=brilinear"),
         "{t}"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A still render whose `--size` and `--spp` make at most `WAVEFRONT_PREVIEW_MAX_SAMPLES` samples
@@ -327,7 +324,6 @@ fn small_renders_on_a_cpu_adapter_run_the_wavefront_model_with_the_same_image() 
     let t = text(&big);
     assert!(big.status.success(), "{t}");
     assert!(!t.contains("exec: "), "{t}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -377,7 +373,6 @@ fn compile_timings_print_phases_and_driver_times() {
         assert!(kernel_line(&t, "rtc render").contains("compiled"), "{t}");
         assert!(t.contains("pipeline cache: off"), "{t}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -434,7 +429,6 @@ fn bench_compile_measures_a_scene_in_a_child() {
     }
     // A single file has no thesis scene to edit.
     assert_eq!(value["material_edit"].as_array().map(Vec::len), Some(0));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -296,7 +296,6 @@ fn view_shows_the_scene_and_a_reload_changes_the_screenshot() {
     let text = lines.lock().expect("lines")[at..].join("\n");
     assert!(status.success(), "exit status {status}: {text}");
     assert!(text.contains("[view] closed"), "{text}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -381,7 +380,6 @@ fn an_animated_scene_plays_and_space_pauses_it_to_refine() {
     let at = wait_for(&mut child.0, &lines, at, "[view] paused at");
     let at = wait_for(&mut child.0, &lines, at, ": 3 spp,");
     assert!(lines.lock().expect("lines")[at].contains("paused at"));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -403,5 +401,4 @@ fn view_without_a_display_says_so() {
         !stderr.contains("ICE") && !stderr.contains("panicked"),
         "{stderr}"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }

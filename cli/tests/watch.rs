@@ -341,7 +341,6 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     std::thread::sleep(Duration::from_millis(200));
     assert!(status.success(), "exit status {status}: {}", w.since(from));
     assert!(w.since(from).contains("[watch] stopped"), "{}", w.since(0));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -366,7 +365,6 @@ fn a_scene_that_fails_from_the_start_is_still_watched() {
     let text = w.wait_for(from, "[watch] #2 ok");
     assert!(text.contains("missing.rt"), "{text}");
     assert!(out.join("kernel.wgsl").is_file());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -388,7 +386,6 @@ fn bad_arguments_are_usage_errors() {
         .expect("run");
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains(".png"));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A `.gltf` (with its buffer as a `data:` URI) of one triangle and one light of each `lights` type.
@@ -462,5 +459,4 @@ fn a_model_file_gaining_a_light_type_compiles_again() {
         second.contains("spot_light"),
         "the spot light is linked now"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }

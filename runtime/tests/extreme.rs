@@ -217,7 +217,6 @@ fn watertight(test: &str, offset: f32, aimed_tol: f64) {
         assert_eq!(stats.flattened.0, if flatten { 4 } else { 0 });
         check_watertight(&img, &stats, aimed_tol);
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The checks of [`watertight`] on one image.
@@ -554,7 +553,6 @@ fn shadow_and_spawned_rays_show_no_acne_and_no_leaks_at_any_scale() {
             lit > 10_000 && dark > 500,
             "{lit} lit and {dark} dark checks"
         );
-        let _ = std::fs::remove_dir_all(&dir);
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
@@ -723,7 +721,6 @@ fn the_cornell_box_matches_at_every_translation_and_scale() {
         "Cornell box",
     )
     .0;
-    let _ = std::fs::remove_dir_all(&dir);
     let brightest = reference
         .pixels()
         .iter()
@@ -748,7 +745,6 @@ fn the_cornell_box_matches_at_every_translation_and_scale() {
         let dir = temp_dir("extreme", "cornell");
         let what = format!("Cornell box scaled by {s:e}, moved by {t:e}");
         let img = render(&gpu, &compile(&dir, &cornell_scene(&dir, s, t)), &what).0;
-        let _ = std::fs::remove_dir_all(&dir);
         let delta = 8.0 * ulp(t + 218.0 * s);
         let rel = 1e-4 + 3.0 * delta / (CB_LIGHT_GAP * s);
         let abs = 1e-5 * f64::from(brightest);
@@ -1021,7 +1017,6 @@ fn degenerate_directions_grazing_rays_and_degenerate_triangles() {
         });
     }
     check_probes(&gpu, test, &dir, "degenerate", &rays);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Tangent spheres (radius 1 at x = ±1, touching at the origin of their pair) and nested ones
@@ -1128,7 +1123,6 @@ fn tangent_and_nested_spheres() {
         ),
     ];
     check_probes(&gpu, test, &dir, "spheres", &rays);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1449,7 +1443,6 @@ fn total_internal_reflection_in_glass() {
             );
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Two facing mirrors (y = 0 facing up and y = 1 facing down, 200 wide) whose material emits
@@ -1507,7 +1500,6 @@ fn mirror_chains(test: &str, depths: &[u32]) {
                 );
             }
         }
-        let _ = std::fs::remove_dir_all(&dir);
     }
 }
 
@@ -1569,7 +1561,6 @@ fn icosphere_row(test: &str, n: u32) {
         "{test}: {} triangles instanced ({} in one BLAS), {hits} hits and {misses} misses checked",
         stats.instanced_triangles, stats.triangles
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Over ten million triangles of geometry in one scene: eight instances of one level-8 icosphere
@@ -1637,7 +1628,6 @@ fn a_single_ten_million_triangle_mesh_is_refused_by_the_binding_limit() {
         message.contains("exceed the device's max_storage_buffer_binding_size"),
         "{message}"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Ten million triangles built by rtc-bvh and traced by its CPU traversal (the reference of the

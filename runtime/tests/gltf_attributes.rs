@@ -365,7 +365,6 @@ fn vertex_colours_multiply_the_base_colour() {
         "no colours",
     ));
     eprintln!("largest error {worst:.2e}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A texture on `TEXCOORD_1`: quad 0's emissive texture (a 2×2 checker, nearest) has
@@ -421,7 +420,6 @@ fn texcoord_1_selects_the_second_uv_set() {
         "texCoord 1",
     );
     check(&image, 1, |_, _| at(0, 0), 1e-4, "texCoord 0");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Normal mapping against the closed form: every quad's normal texture is one texel `(r, g, b)`
@@ -520,5 +518,4 @@ fn normal_maps_tilt_the_shading_normal() {
         "degenerate uvs",
     ));
     eprintln!("largest error {worst:.2e}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

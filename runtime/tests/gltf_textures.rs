@@ -293,7 +293,6 @@ fn sampler_wrap_modes_and_filters_and_the_emissive_texture() {
     assert_eq!(expected([uv_at(0), uv_at(0)], QUADS[0]), texel(0, 0));
     assert_eq!(expected([uv_at(0), uv_at(0)], QUADS[1]), texel(0, 0));
     assert_eq!(expected([uv_at(0), uv_at(0)], QUADS[2]), texel(1, 1));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Back faces and blending: quad 0 is alpha-masked, single-sided and seen from the back: not hit
@@ -355,7 +354,6 @@ fn single_sided_materials_cull_back_faces_and_blending_is_stochastic_coverage() 
         means[3], 0.0,
         "an opaque single-sided quad seen from the back is not hit"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `KHR_texture_transform` on the emissive texture (nearest, repeat): quad `k` has transform
@@ -425,5 +423,4 @@ fn texture_transforms_map_the_uvs_of_each_texture() {
         }
     }
     eprintln!("{checked} pixels checked");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -182,5 +182,4 @@ fn a_transmissive_quad_shows_the_background_fresnel_weighted_and_tinted() {
             }
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -51,7 +51,6 @@ fn render(gpu: &Gpu, name: &str, file: &SceneFile) -> LinearImage {
         ..RenderOptions::default()
     };
     let (image, _) = common::scene::render(gpu, &compiled, options, name);
-    let _ = std::fs::remove_dir_all(&dir);
     image
 }
 
@@ -322,7 +321,6 @@ fn both_models_in_tiles(
             "{name}: rays traced"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
     (mega, wave, stats)
 }
 
@@ -399,7 +397,6 @@ fn uniform_tables_change_no_pixel() {
                 .count();
             assert_eq!(differing, 0, "{what}: pixels differ between the placements");
         }
-        let _ = std::fs::remove_dir_all(&dir);
     }
 }
 
@@ -424,7 +421,6 @@ fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
     };
     let (plain, plain_stats) = common::scene::render(&gpu, &compiled, options(false), "plain");
     let (timed, stats) = common::scene::render(&gpu, &compiled, options(true), "timed");
-    let _ = std::fs::remove_dir_all(&dir);
     assert!(
         plain_stats.stage_ms.is_empty(),
         "{:?}",
@@ -501,7 +497,6 @@ fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
             common::scene::render(&gpu, &compiled, options(ExecModel::Megakernel), &what);
         let (wave, stats) =
             common::scene::render(&gpu, &compiled, options(ExecModel::Wavefront), &what);
-        let _ = std::fs::remove_dir_all(&dir);
         let labels: Vec<&str> = stats.stage_ms.iter().map(|(l, _)| l.as_str()).collect();
         assert_eq!(
             labels.contains(&"rtc wf_count") && labels.contains(&"rtc wf_compact"),
@@ -685,7 +680,6 @@ fn a_camera_of_several_samples_a_pass_gets_them_all_in_later_rounds() {
     let dir = temp_dir("features", "samples");
     let compiled = compile_with_stages(&file, &dir);
     assert_eq!(compiled.samples_per_pass, 3);
-    let _ = std::fs::remove_dir_all(&dir);
     let (mega, wave, stats) = both_models(&gpu, "samples", &file, [32, 32]);
     assert_eq!((stats.samples, stats.passes), (3, 1));
     let off = differing(&mega, &wave, 0.0);
@@ -717,7 +711,6 @@ fn the_path_loop_estimates_what_the_stack_estimates() {
         let compiled = file.compile(&dir);
         assert_eq!(compiled.linked.config.path_loop, want_loop, "{name}");
         let (img, _) = common::scene::render(&gpu, &compiled, RenderOptions::default(), name);
-        let _ = std::fs::remove_dir_all(&dir);
         let mut sum = [0.0f64; 3];
         for y in 0..img.height() {
             for x in 0..img.width() {
@@ -886,7 +879,6 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
         .map(|k| k.label())
         .collect();
     assert_eq!(compiled, ["rtc wf_shade"]);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -953,7 +945,6 @@ fn a_light_sample_past_the_queries_it_records_is_warned_about() {
             ..RenderOptions::default()
         };
         let (image, stats) = common::scene::render(&gpu, &compiled, options, name);
-        let _ = std::fs::remove_dir_all(&dir);
         assert_eq!(image.count_nonfinite(), 0, "{name}");
         stats
     };
@@ -1016,7 +1007,6 @@ fn an_unoccluded_light_sample_ignores_blockers_and_traces_no_ray() {
                 "{name}: an unoccluded sample, or one below the surface, traced a ray"
             );
         }
-        let _ = std::fs::remove_dir_all(&dir);
     }
 }
 
@@ -1054,7 +1044,6 @@ fn random_numbers_are_stratified_in_every_pair_of_dimensions() {
             ..RenderOptions::default()
         };
         let (image, _) = common::scene::render(&gpu, &compiled, options, &name);
-        let _ = std::fs::remove_dir_all(&dir);
         assert_eq!((image.width(), image.height()), (16, 16));
         image
     };

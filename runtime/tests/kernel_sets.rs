@@ -206,7 +206,6 @@ fn the_disk_cache_is_written_and_read_by_a_second_gpu() {
         PipelineCacheStatus::Off => panic!("the cache was configured"),
     }
     assert_eq!(second.pipelines_created(), 1);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A damaged cache file (a flipped byte, a cut, garbage) is ignored with a warning naming it; the
@@ -261,5 +260,4 @@ fn a_corrupt_cache_file_is_ignored_with_a_warning() {
             "{what}: the next write replaces it"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -39,7 +39,6 @@ fn render(gpu: &Gpu, name: &str, file: &SceneFile, samples: u32) -> LinearImage 
         ..RenderOptions::default()
     };
     let (image, _) = common::scene::render(gpu, &compiled, options, name);
-    let _ = std::fs::remove_dir_all(&dir);
     image
 }
 

@@ -133,7 +133,6 @@ fn a_lit_quad_matches_the_analytic_lambert_value() {
     );
     assert_eq!(again.image, result.image);
     assert!(again.stats.buffers_written.is_empty());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The render kernel spreads each tile's workgroups over the tile by a permutation of their order
@@ -186,7 +185,6 @@ fn every_tile_shape_renders_every_pixel_once() {
             "{w} x {h} tiles give a different image from one 33 x 33 tile"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A custom geometry (an analytic ball written in the scene file) goes through the compiler's bounds
@@ -271,7 +269,6 @@ fn a_custom_geometry_goes_through_the_bounds_kernel() {
         misses_in_box > 10,
         "{misses_in_box} pixels in the ball's box but off the ball checked"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Whether the centre ray of pixel `(x, y)` enters the ball's world box `[-0.5, 0.5] × [0, 1] ×

@@ -563,7 +563,6 @@ fn known_rays_hit_what_the_reference_hits() {
         );
         assert!(hits >= 100 && misses >= 20, "{hits} hits, {misses} misses");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Dispatch (`scenes/traversal/dispatch.rt`): three material types declared only in the scene file (no Rust code knows them), one
@@ -611,5 +610,4 @@ fn each_material_id_reaches_its_program() {
             assert_eq!(&got[..3], w, "pixel {x} ({}), flatten {flatten}", r.what);
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

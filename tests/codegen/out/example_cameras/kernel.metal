@@ -544,11 +544,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_1 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_1) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -556,19 +557,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_3 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_3;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_3;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -615,7 +607,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -692,7 +684,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -708,10 +700,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -742,7 +734,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -812,7 +804,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_6,
+    Ray ray_5,
     Candidate best_1,
     bool shadow_1,
     thread uint& F32_INF,
@@ -824,22 +816,22 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_6);
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_5 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_5 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
 }
 
@@ -910,7 +902,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_7,
+    Ray ray_6,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -922,9 +914,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_7.origin, ray_7.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_7.origin + (ray_7.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -965,7 +957,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_7.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1050,17 +1042,17 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_8 = {};
+    Ray ray_7 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_8.medium = _e17;
-    Ray _e18 = ray_8;
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
     return _e18;
 }
 
@@ -1070,7 +1062,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_9,
+    Ray ray_8,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1088,7 +1080,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1097,7 +1089,7 @@ Candidate intersect_scene(
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_9);
+    BoxRay _e19 = box_ray(header_3, ray_8);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1118,7 +1110,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_9, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_8, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1196,9 +1188,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_6,
-    Ray ray_10
+    Ray ray_9
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_10.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_6.horizon, b_6.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1209,17 +1201,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_11,
+    Ray ray_10,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_11);
+    metal::float3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_12,
+    Ray ray_11,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1228,7 +1220,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1244,10 +1236,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_13,
+    Ray ray_12,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1453,7 +1445,7 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m,
-    Ray ray_14,
+    Ray ray_13,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1469,7 +1461,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_14, hit_2);
+    metal::float3 _e3 = shading_normal(ray_13, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_3 = 0u;
@@ -1499,7 +1491,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_3,
     uint offset_7,
-    Ray ray_15,
+    Ray ray_14,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1515,12 +1507,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_7, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_15, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_14, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_16,
+    Ray ray_15,
     Candidate c_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1536,15 +1528,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_16, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_15, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_4,
     uint offset_8,
-    Ray ray_17,
+    Ray ray_16,
     float t,
     metal::float3 radiance
 ) {
@@ -1552,7 +1544,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_18,
+    Ray ray_17,
     float t_1,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -1561,21 +1553,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_18.medium == 0u) {
+    if (ray_17.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_18.medium - 1u];
+    GpuInstance inst_9 = instances[ray_17.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_18, t_1, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_5,
     uint offset_9,
-    Ray ray_19,
+    Ray ray_18,
     Hit hit_4
 ) {
     return;
@@ -1630,7 +1622,7 @@ metal::float3 trace(
     float t_2 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_20 = {};
+    Ray ray_19 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1668,7 +1660,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_19 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1687,10 +1679,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_20;
+            Ray _e67 = ray_19;
             Candidate _e69 = intersect_scene(_e67, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_20;
+            Ray _e70 = ray_19;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -1827,7 +1819,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_20 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_19 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

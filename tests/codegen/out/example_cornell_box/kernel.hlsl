@@ -470,16 +470,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_20 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_20;
+    const Ray ray_19 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_19;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_21 = _e4;
-    return ray_21;
+    const Ray ray_20 = _e4;
+    return ray_20;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -508,8 +508,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_22 = _e25;
-    return ray_22;
+    const Ray ray_21 = _e25;
+    return ray_21;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -562,8 +562,11 @@ BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float 
     return ret;
 }
 
-BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+BoxRay box_ray(GpuNode header_1, Ray ray_2)
 {
+    float3 origin_2 = header_1.min_;
+    const float3 _e3 = node_frame_hi(header_1);
+    float3 extent = (_e3 - origin_2);
     float m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_1) >> 23u) & 255u), 1u), 253u);
     float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
@@ -571,19 +574,11 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     float3 floor_ = (9.094947e-13).xxx;
     float3 s_3 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
     float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_3 * floor_) : d_3));
-    float3 rel = (origin_1 - ray_2.origin);
+    float3 rel = (origin_2 - ray_2.origin);
     float3 start = (rel * inv);
-    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
-    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_3);
+    const BoxRay boxray = ConstructBoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
-{
-    const float3 _e4 = node_frame_hi(header_1);
-    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    const BoxRay boxray_1 = _e7;
-    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -620,7 +615,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_8 ? float3(t_4, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
 {
     return true;
 }
@@ -687,7 +682,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -697,10 +692,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    const BoxRay _e12 = header_box_ray(header_2, ray_5);
+    const BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -731,7 +726,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                const float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
@@ -820,17 +815,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_6, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_6);
+    const Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -838,9 +833,9 @@ Candidate intersect_object(uint slot_2, Ray ray_6, Candidate best_1, bool shadow
     return candidate_4;
 }
 
-float point_error(float3 origin_2, float3 along)
+float point_error(float3 origin_1, float3 along)
 {
-    float3 a_5 = (abs(origin_2) + abs(along));
+    float3 a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -920,16 +915,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_7, Candidate c_1)
+Hit finish_hit(Ray ray_6, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_7.origin, (ray_7.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_6.origin, (ray_6.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_7.origin + (ray_7.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -973,7 +968,7 @@ Hit finish_hit(Ray ray_7, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_7.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_9 = _e151;
     return hit_9;
@@ -1033,20 +1028,20 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_8 = (Ray)0;
+    Ray ray_7 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    float3 _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    float3 _e15 = ray_7.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_8.medium = _e17;
-    Ray _e18 = ray_8;
-    const Ray ray_23 = _e18;
-    return ray_23;
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    const Ray ray_22 = _e18;
+    return ray_22;
 }
 
 float3 node_frame_bounds()
@@ -1054,7 +1049,7 @@ float3 node_frame_bounds()
     return (65535.0).xxx;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2)
+Candidate intersect_scene(Ray ray_8, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1064,7 +1059,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_9.tmax);
+    const Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1074,7 +1069,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    const BoxRay _e19 = header_box_ray(header_3, ray_9);
+    const BoxRay _e19 = box_ray(header_3, ray_8);
     const float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
@@ -1096,7 +1091,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_8, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1161,18 +1156,18 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_10)
+float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_9)
 {
     return ZeroValuefloat3();
 }
 
-float3 miss(Ray ray_11)
+float3 miss(Ray ray_10)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
     return _e9;
 }
 
@@ -1191,9 +1186,9 @@ Lambert load_Lambert(uint offset_3)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_12, Hit hit_1)
+float3 shading_normal(Ray ray_11, Hit hit_1)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1285,8 +1280,8 @@ Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd)));
     }
     float _e59 = tmax_4;
-    const Ray ray_24 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_24;
+    const Ray ray_23 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_23;
 }
 
 float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
@@ -1350,12 +1345,12 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m, Ray ray_13, Hit hit_2)
+float3 lambert_shade(Lambert m, Ray ray_12, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_3 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_13, hit_2);
+    const float3 _e3 = shading_normal(ray_12, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1382,43 +1377,43 @@ float3 lambert_shade(Lambert m, Ray ray_13, Hit hit_2)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_3, uint offset_6, Ray ray_14, Hit hit_3, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_3, uint offset_6, Ray ray_13, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_6);
-    const float3 _e4 = lambert_shade(_e3, ray_14, hit_3);
+    const float3 _e4 = lambert_shade(_e3, ray_13, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_15, Candidate c_2)
+float3 shade_direct(Ray ray_14, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_15, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_14, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_4, uint offset_7, Ray ray_16, float t, float3 radiance)
+float3 dispatch_medium(uint type_id_4, uint offset_7, Ray ray_15, float t, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_17, float t_1, float3 radiance_1)
+float3 through_medium(Ray ray_16, float t_1, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_17.medium == 0u)) {
+    if ((ray_16.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_17.medium - 1u)*128+0)), asfloat(instances.Load4((ray_17.medium - 1u)*128+16)), asfloat(instances.Load4((ray_17.medium - 1u)*128+32)), asfloat(instances.Load4((ray_17.medium - 1u)*128+48)), asfloat(instances.Load4((ray_17.medium - 1u)*128+64)), asfloat(instances.Load4((ray_17.medium - 1u)*128+80)), asuint(instances.Load((ray_17.medium - 1u)*128+96)), asuint(instances.Load((ray_17.medium - 1u)*128+100)), asuint(instances.Load((ray_17.medium - 1u)*128+104)), asuint(instances.Load((ray_17.medium - 1u)*128+108)), asuint(instances.Load((ray_17.medium - 1u)*128+112)), asuint(instances.Load((ray_17.medium - 1u)*128+116)), asuint(instances.Load((ray_17.medium - 1u)*128+120)), asuint(instances.Load((ray_17.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_16.medium - 1u)*128+0)), asfloat(instances.Load4((ray_16.medium - 1u)*128+16)), asfloat(instances.Load4((ray_16.medium - 1u)*128+32)), asfloat(instances.Load4((ray_16.medium - 1u)*128+48)), asfloat(instances.Load4((ray_16.medium - 1u)*128+64)), asfloat(instances.Load4((ray_16.medium - 1u)*128+80)), asuint(instances.Load((ray_16.medium - 1u)*128+96)), asuint(instances.Load((ray_16.medium - 1u)*128+100)), asuint(instances.Load((ray_16.medium - 1u)*128+104)), asuint(instances.Load((ray_16.medium - 1u)*128+108)), asuint(instances.Load((ray_16.medium - 1u)*128+112)), asuint(instances.Load((ray_16.medium - 1u)*128+116)), asuint(instances.Load((ray_16.medium - 1u)*128+120)), asuint(instances.Load((ray_16.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_18, Hit hit_4)
+void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_17, Hit hit_4)
 {
     return;
 }
@@ -1474,7 +1469,7 @@ float3 trace(Ray camera_ray)
     float t_2 = (float)0;
     Frame stack[1] = (Frame[1])0;
     uint depth = (uint)0;
-    Ray ray_19 = (Ray)0;
+    Ray ray_18 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1513,7 +1508,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray1_Frame_();
     depth = 0u;
-    ray_19 = camera_ray;
+    ray_18 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1532,10 +1527,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_19;
+            Ray _e67 = ray_18;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_19;
+            Ray _e70 = ray_18;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1672,7 +1667,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_19 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_18 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 0u)), 0u)].ray;
             s_ray = _e299;

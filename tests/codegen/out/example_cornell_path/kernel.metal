@@ -538,11 +538,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -550,19 +551,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_4 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_4;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -609,7 +601,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -686,7 +678,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -702,10 +694,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -736,7 +728,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -806,7 +798,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_6,
+    Ray ray_5,
     Candidate best_1,
     bool shadow_1,
     thread uint& F32_INF,
@@ -818,22 +810,22 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_6);
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_5 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_5 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
 }
 
@@ -904,7 +896,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_7,
+    Ray ray_6,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -916,9 +908,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_7.origin, ray_7.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_7.origin + (ray_7.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -959,7 +951,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_7.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1044,24 +1036,24 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_8 = {};
+    Ray ray_7 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_8.medium = _e17;
-    Ray _e18 = ray_8;
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
     return _e18;
 }
 
 PathState start_path(
-    Ray ray_9
+    Ray ray_8
 ) {
-    return PathState {ray_9, metal::float3(1.0), metal::float3(0.0), true};
+    return PathState {ray_8, metal::float3(1.0), metal::float3(0.0), true};
 }
 
 metal::float3 node_frame_bounds(
@@ -1070,7 +1062,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_10,
+    Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1088,7 +1080,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1097,7 +1089,7 @@ Candidate intersect_scene(
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_10);
+    BoxRay _e19 = box_ray(header_3, ray_9);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1118,7 +1110,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_10, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_9, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1180,20 +1172,20 @@ Candidate intersect_scene(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_2,
-    Ray ray_11
+    Ray ray_10
 ) {
     return metal::float3 {};
 }
 
 metal::float3 miss(
-    Ray ray_12,
+    Ray ray_11,
     constant FrameUniforms& frame
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -1255,7 +1247,7 @@ void rt_spawn(
 
 void path_diffuse_rays(
     PathDiffuse m,
-    Ray ray_13,
+    Ray ray_12,
     Hit hit_1,
     thread type_5& scratch,
     thread uint& rng_state,
@@ -1269,7 +1261,7 @@ void path_diffuse_rays(
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_10, _e12);
     weight_1 = m.albedo;
-    if (ray_13.depth >= m.roulette_depth) {
+    if (ray_12.depth >= m.roulette_depth) {
         float q_3 = metal::saturate(metal::max(m.albedo[0], metal::max(m.albedo[1], m.albedo[2])));
         float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_3) {
@@ -1288,7 +1280,7 @@ void path_diffuse_rays(
 void dispatch_secondary_rays(
     uint type_id_2,
     uint offset_4,
-    Ray ray_14,
+    Ray ray_13,
     Hit hit_2,
     thread type_5& scratch,
     thread uint& rng_state,
@@ -1299,7 +1291,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathDiffuse _e3 = load_PathDiffuse(offset_4, params, _buffer_sizes);
-    path_diffuse_rays(_e3, ray_14, hit_2, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+    path_diffuse_rays(_e3, ray_13, hit_2, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1317,17 +1309,17 @@ Emissive load_Emissive(
 }
 
 bool after_nee_bounce(
-    Ray ray_15
+    Ray ray_14
 ) {
-    return metal::dot(ray_15.dir, ray_15.dir) > 2.0;
+    return metal::dot(ray_14.dir, ray_14.dir) > 2.0;
 }
 
 metal::float3 emissive_shade(
     Emissive m_1,
-    Ray ray_16,
+    Ray ray_15,
     Hit hit_3
 ) {
-    bool _e3 = after_nee_bounce(ray_16);
+    bool _e3 = after_nee_bounce(ray_15);
     if (_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u))) {
         return metal::float3(0.0);
     }
@@ -1599,7 +1591,7 @@ float mis_light_weight(
 
 metal::float3 path_diffuse_shade(
     PathDiffuse m_2,
-    Ray ray_17,
+    Ray ray_16,
     Hit hit_4,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1617,8 +1609,8 @@ metal::float3 path_diffuse_shade(
 ) {
     metal::float3 direct = {};
     uint i_4 = {};
-    metal::float3 n_11 = metal::faceforward(hit_4.normal, ray_17.dir, hit_4.geometric_normal);
-    metal::float3 ng_1 = metal::faceforward(hit_4.geometric_normal, ray_17.dir, hit_4.geometric_normal);
+    metal::float3 n_11 = metal::faceforward(hit_4.normal, ray_16.dir, hit_4.geometric_normal);
+    metal::float3 ng_1 = metal::faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
     direct = metal::float3(0.0);
     uint _e16 = light_count_query(frame);
     i_4 = 0u;
@@ -1650,7 +1642,7 @@ metal::float3 path_diffuse_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_8,
-    Ray ray_18,
+    Ray ray_17,
     Hit hit_5,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1669,12 +1661,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             Emissive _e5 = load_Emissive(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = emissive_shade(_e5, ray_18, hit_5);
+            metal::float3 _e6 = emissive_shade(_e5, ray_17, hit_5);
             return _e6;
         }
         case 1u: {
             PathDiffuse _e7 = load_PathDiffuse(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = path_diffuse_shade(_e7, ray_18, hit_5, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e8 = path_diffuse_shade(_e7, ray_17, hit_5, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1736,25 +1728,25 @@ PathState path_step(
     metal::float3 dir_7 = {};
     metal::float3 weight_2 = {};
     metal::float3 beta = {};
-    Ray ray_19 = s_1.ray;
+    Ray ray_18 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_2.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_19, frame);
+        metal::float3 _e14 = miss(ray_18, frame);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e22 = finish_hit(ray_19, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_7 = metal::float3(0.0);
     weight_2 = metal::float3(0.0);
     if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_19, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_18, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1764,7 +1756,7 @@ PathState path_step(
             weight_2 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {

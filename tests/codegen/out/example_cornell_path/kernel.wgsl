@@ -444,7 +444,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_3) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -452,16 +455,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_4 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_4 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -497,7 +494,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_8);
 }
 
-fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -549,7 +546,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -558,10 +555,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_5);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_2 = nodes[base_1];
-    let _e12 = header_box_ray(header_2, ray_5);
+    let _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -580,7 +577,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
                 let _e38 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -652,23 +649,23 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     return _e138;
 }
 
-fn intersect_object(slot_2: u32, ray_6: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_6);
+    let _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_5 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -721,15 +718,15 @@ fn normal_to_world(inst_5: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_7: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_7.origin, (ray_7.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_7.origin + (ray_7.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -770,7 +767,7 @@ fn finish_hit(ray_7: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_7.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -822,30 +819,30 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_8: Ray;
+    var ray_7: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    let _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    let _e15 = ray_7.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_8.medium = _e17;
-    let _e18 = ray_8;
+    ray_7.medium = _e17;
+    let _e18 = ray_7;
     return _e18;
 }
 
-fn start_path(ray_9: Ray) -> PathState {
-    return PathState(ray_9, vec3(1f), vec3(0f), true);
+fn start_path(ray_8: Ray) -> PathState {
+    return PathState(ray_8, vec3(1f), vec3(0f), true);
 }
 
 fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -854,7 +851,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_10.tmax);
+    let _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -863,7 +860,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     }
     let base_2 = frame_3.tlas_root;
     let header_3 = nodes[base_2];
-    let _e19 = header_box_ray(header_3, ray_10);
+    let _e19 = box_ray(header_3, ray_9);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -881,7 +878,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -940,16 +937,16 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     return _e119;
 }
 
-fn dispatch_miss(type_id_1: u32, offset_2: u32, ray_11: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_2: u32, ray_10: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_12: Ray) -> vec3<f32> {
+fn miss(ray_11: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -991,7 +988,7 @@ fn rt_spawn(dir_1: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn path_diffuse_rays(m: PathDiffuse, ray_13: Ray, hit_1: Hit) {
+fn path_diffuse_rays(m: PathDiffuse, ray_12: Ray, hit_1: Hit) {
     var weight_1: vec3<f32>;
 
     let ng = select(-(hit_1.geometric_normal), hit_1.geometric_normal, hit_1.front_face);
@@ -999,7 +996,7 @@ fn path_diffuse_rays(m: PathDiffuse, ray_13: Ray, hit_1: Hit) {
     let _e12 = rand2_next();
     let _e13 = sample_cosine_hemisphere(n_10, _e12);
     weight_1 = m.albedo;
-    if (ray_13.depth >= m.roulette_depth) {
+    if (ray_12.depth >= m.roulette_depth) {
         let q_3 = saturate(max(m.albedo.x, max(m.albedo.y, m.albedo.z)));
         let _e28 = rand_next();
         if (_e28 >= q_3) {
@@ -1015,9 +1012,9 @@ fn path_diffuse_rays(m: PathDiffuse, ray_13: Ray, hit_1: Hit) {
     return;
 }
 
-fn dispatch_secondary_rays(type_id_2: u32, offset_4: u32, ray_14: Ray, hit_2: Hit) {
+fn dispatch_secondary_rays(type_id_2: u32, offset_4: u32, ray_13: Ray, hit_2: Hit) {
     let _e3 = load_PathDiffuse(offset_4);
-    path_diffuse_rays(_e3, ray_14, hit_2);
+    path_diffuse_rays(_e3, ray_13, hit_2);
     return;
 }
 
@@ -1030,12 +1027,12 @@ fn load_Emissive(offset_5: u32) -> Emissive {
     return Emissive(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), _e30);
 }
 
-fn after_nee_bounce(ray_15: Ray) -> bool {
-    return (dot(ray_15.dir, ray_15.dir) > 2f);
+fn after_nee_bounce(ray_14: Ray) -> bool {
+    return (dot(ray_14.dir, ray_14.dir) > 2f);
 }
 
-fn emissive_shade(m_1: Emissive, ray_16: Ray, hit_3: Hit) -> vec3<f32> {
-    let _e3 = after_nee_bounce(ray_16);
+fn emissive_shade(m_1: Emissive, ray_15: Ray, hit_3: Hit) -> vec3<f32> {
+    let _e3 = after_nee_bounce(ray_15);
     if (_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u))) {
         return vec3(0f);
     }
@@ -1195,12 +1192,12 @@ fn mis_light_weight(l_1: LightSample, bsdf_pdf: f32) -> f32 {
     return _e8;
 }
 
-fn path_diffuse_shade(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn path_diffuse_shade(m_2: PathDiffuse, ray_16: Ray, hit_4: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
     var i_4: u32;
 
-    let n_11 = faceForward(hit_4.normal, ray_17.dir, hit_4.geometric_normal);
-    let ng_1 = faceForward(hit_4.geometric_normal, ray_17.dir, hit_4.geometric_normal);
+    let n_11 = faceForward(hit_4.normal, ray_16.dir, hit_4.geometric_normal);
+    let ng_1 = faceForward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
     direct = vec3(0f);
     let _e16 = light_count_query();
     i_4 = 0u;
@@ -1224,16 +1221,16 @@ fn path_diffuse_shade(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit, secondary: vec3
     return (((m_2.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_18: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_17: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_Emissive(offset_8);
-            let _e6 = emissive_shade(_e5, ray_18, hit_5);
+            let _e6 = emissive_shade(_e5, ray_17, hit_5);
             return _e6;
         }
         case 1u: {
             let _e7 = load_PathDiffuse(offset_8);
-            let _e8 = path_diffuse_shade(_e7, ray_18, hit_5, secondary_1);
+            let _e8 = path_diffuse_shade(_e7, ray_17, hit_5, secondary_1);
             return _e8;
         }
         default: {
@@ -1268,25 +1265,25 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
     var weight_2: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_19 = s_1.ray;
+    let ray_18 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_2.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_19);
+        let _e14 = miss(ray_18);
         out.radiance = (s_1.radiance + (s_1.beta * _e14));
         let _e17 = out;
         return _e17;
     }
     let inst_8 = instances[c_2.slot];
-    let _e22 = finish_hit(ray_19, c_2);
+    let _e22 = finish_hit(ray_18, c_2);
     let error_4 = hit_error;
     spawned = false;
     dir_7 = vec3(0f);
     weight_2 = vec3(0f);
-    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_19.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_18.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_19, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_18, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1296,7 +1293,7 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
             weight_2 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e22, vec3(0f));
     out.radiance = (s_1.radiance + (s_1.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1313,7 +1310,7 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_19.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_18.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
         let survive = (q_4 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1329,7 +1326,7 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_7;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_19.depth + 1u), RAY_SECONDARY, ray_19.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_18.depth + 1u), RAY_SECONDARY, ray_18.medium);
     out.live = true;
     let _e128 = out;
     return _e128;

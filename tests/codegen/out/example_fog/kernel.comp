@@ -448,7 +448,10 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+BoxRay box_ray(GpuNode header_1, Ray ray_2) {
+    vec3 origin_2 = header_1.min_;
+    vec3 _e3 = node_frame_hi(header_1);
+    vec3 extent = (_e3 - origin_2);
     float m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_6) >> 23u) & 255u), 1u), 253u);
     vec3 d_4 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
@@ -456,16 +459,10 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     vec3 floor_ = vec3(9.094947e-13);
     vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d_4, vec3(0.0)));
     vec3 inv = (vec3(1.0) / mix(d_4, (s_4 * floor_), lessThan(abs(d_4), floor_)));
-    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 rel = (origin_2 - ray_2.origin);
     vec3 start = (rel * inv);
-    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
-    vec3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    return _e7;
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -501,8 +498,8 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_12 ? vec3(t_5, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-float point_error(vec3 origin_2, vec3 along) {
-    vec3 a_5 = (abs(origin_2) + abs(along));
+float point_error(vec3 origin_1, vec3 along) {
+    vec3 a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -554,14 +551,14 @@ vec3 normal_to_world(GpuInstance inst_3, vec3 n_1) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_4, Candidate c) {
+Hit finish_hit(Ray ray_3, Candidate c) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_6 = _group_0_binding_3_cs[c.slot];
-    float _e11 = point_error(ray_4.origin, (ray_4.dir * vec3(c.t)));
+    float _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c.t)));
     hit_error = _e11;
-    hit = Hit((ray_4.origin + (ray_4.dir * vec3(c.t))), c.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c.uv, true, inst_6.object, c.primitive);
+    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c.t))), c.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c.uv, true, inst_6.object, c.primitive);
     n_geo = c.normal;
     n_shade = c.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -602,7 +599,7 @@ Hit finish_hit(Ray ray_4, Candidate c) {
     vec3 _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_4.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_3.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -651,27 +648,27 @@ void absorb_query(float density) {
     return;
 }
 
-bool fog_any_hit(Fog m, Ray ray_5, Hit hit_1) {
+bool fog_any_hit(Fog m, Ray ray_4, Hit hit_1) {
     absorb_query(m.density);
-    return (ray_5.kind != RAY_SHADOW);
+    return (ray_4.kind != RAY_SHADOW);
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_2) {
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_5, Hit hit_2) {
     Fog _e3 = load_Fog(offset_3);
-    bool _e4 = fog_any_hit(_e3, ray_6, hit_2);
+    bool _e4 = fog_any_hit(_e3, ray_5, hit_2);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_1) {
+bool accept(GpuInstance inst_4, Ray ray_6, Candidate c_1) {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_7, c_1);
+        Hit _e10 = finish_hit(ray_6, c_1);
         hit_error = shaded;
-        if ((ray_7.kind == RAY_SHADOW)) {
+        if ((ray_6.kind == RAY_SHADOW)) {
             scratch[min(SCRATCH_ABSORB, 14u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(SCRATCH_ABSORB_T, 14u)] = floatBitsToUint((c_1.t * length(ray_7.dir)));
+            scratch[min(SCRATCH_ABSORB_T, 14u)] = floatBitsToUint((c_1.t * length(ray_6.dir)));
         }
-        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
         scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
@@ -726,7 +723,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_8, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_7, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -734,10 +731,10 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_8);
+    TriangleRay _e7 = prepare_triangle_ray(ray_7);
     uint base_1 = inst_5.blas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_8);
+    BoxRay _e12 = box_ray(header_2, ray_7);
     sp_1 = 0u;
     child = header_2.a;
     while(true) {
@@ -762,7 +759,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                vec3 _e46 = hit_triangle(_e7, prim, ray_8.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                vec3 _e46 = hit_triangle(_e7, prim, ray_7.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
@@ -830,15 +827,15 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return _e138;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_9, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_7 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_7, ray_9);
+    Ray _e7 = to_object(inst_7, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -892,17 +889,17 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_10 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_9 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    vec3 _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    vec3 _e15 = ray_9.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
     return _e18;
 }
 
@@ -910,7 +907,7 @@ vec3 node_frame_bounds() {
     return vec3(65535.0);
 }
 
-Candidate intersect_scene(Ray ray_11, bool shadow_2) {
+Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -918,7 +915,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
@@ -927,7 +924,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = _group_0_binding_2_cs[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    BoxRay _e19 = box_ray(header_3, ray_10);
     vec3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
@@ -945,7 +942,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1004,16 +1001,16 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     return _e119;
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_4, Ray ray_12) {
+vec3 dispatch_miss(uint type_id_2, uint offset_4, Ray ray_11) {
     return vec3(0.0);
 }
 
-vec3 miss(Ray ray_13) {
+vec3 miss(Ray ray_12) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1022,7 +1019,7 @@ void shading_medium(uint medium) {
     return;
 }
 
-vec3 fog_shade(Fog m_1, Ray ray_14, Hit hit_3, vec3 secondary) {
+vec3 fog_shade(Fog m_1, Ray ray_13, Hit hit_3, vec3 secondary) {
     return secondary;
 }
 
@@ -1033,8 +1030,8 @@ Lambert load_Lambert(uint offset_5) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 shading_normal(Ray ray_15, Hit hit_4) {
-    vec3 ng = faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
+vec3 shading_normal(Ray ray_14, Hit hit_4) {
+    vec3 ng = faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1111,7 +1108,7 @@ Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_transmittance(Ray ray_16, uint medium_1) {
+float shadow_transmittance(Ray ray_15, uint medium_1) {
     float depth = 0.0;
     scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
     scratch[min(SCRATCH_DEPTH, 14u)] = 0u;
@@ -1121,15 +1118,15 @@ float shadow_transmittance(Ray ray_16, uint medium_1) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = _group_0_binding_3_cs[(medium_1 - 1u)];
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
-                Hit start_1 = Hit(ray_16.origin, 0.0, -(ray_16.dir), -(ray_16.dir), vec2(0.0), true, inst_8.object, 0u);
+                Hit start_1 = Hit(ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), vec2(0.0), true, inst_8.object, 0u);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_16, start_1);
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    Candidate _e75 = intersect_scene(ray_16, true);
+    Candidate _e75 = intersect_scene(ray_15, true);
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
@@ -1140,11 +1137,11 @@ float shadow_transmittance(Ray ray_16, uint medium_1) {
     uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if ((net_1 > (1e-6 * uintBitsToFloat(_e101)))) {
         uint _e107 = F32_INF;
-        if ((ray_16.tmax == uintBitsToFloat(_e107))) {
+        if ((ray_15.tmax == uintBitsToFloat(_e107))) {
             return 0.0;
         }
         float _e111 = depth;
-        depth = (_e111 + (net_1 * (ray_16.tmax * length(ray_16.dir))));
+        depth = (_e111 + (net_1 * (ray_15.tmax * length(ray_15.dir))));
     }
     float _e118 = depth;
     return exp(-(max(_e118, 0.0)));
@@ -1194,10 +1191,10 @@ LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
     return _e28;
 }
 
-vec3 lambert_shade(Lambert m_2, Ray ray_17, Hit hit_5) {
+vec3 lambert_shade(Lambert m_2, Ray ray_16, Hit hit_5) {
     vec3 color = vec3(0.0);
     uint i_3 = 0u;
-    vec3 _e3 = shading_normal(ray_17, hit_5);
+    vec3 _e3 = shading_normal(ray_16, hit_5);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1221,16 +1218,16 @@ vec3 lambert_shade(Lambert m_2, Ray ray_17, Hit hit_5) {
     return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_18, Hit hit_6, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_17, Hit hit_6, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8);
-            vec3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
+            vec3 _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8);
-            vec3 _e8 = lambert_shade(_e7, ray_18, hit_6);
+            vec3 _e8 = lambert_shade(_e7, ray_17, hit_6);
             return _e8;
         }
         default: {
@@ -1240,11 +1237,11 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_18, Hit hit_6, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_19, Candidate c_2) {
+vec3 shade_direct(Ray ray_18, Candidate c_2) {
     GpuInstance inst_9 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_19, c_2);
-    shading_medium(ray_19.medium);
-    vec3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_18, c_2);
+    shading_medium(ray_18.medium);
+    vec3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, vec3(0.0));
     return _e12;
 }
 
@@ -1290,10 +1287,10 @@ vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_3, float d, float trans) 
     return (_e97.radiance * vec3(((sigma_1 * e_4) / pdf)));
 }
 
-vec3 fog_medium(Fog m_4, Ray ray_20, float t, vec3 radiance) {
+vec3 fog_medium(Fog m_4, Ray ray_19, float t, vec3 radiance) {
     vec3 light = vec3(0.0);
     uint i_6 = 0u;
-    float len = length(ray_20.dir);
+    float len = length(ray_19.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
@@ -1315,32 +1312,32 @@ vec3 fog_medium(Fog m_4, Ray ray_20, float t, vec3 radiance) {
         }
         vec3 _e27 = light;
         uint _e28 = i_6;
-        vec3 _e33 = fog_inscatter(m_4, _e28, ray_20.origin, (ray_20.dir / vec3(len)), d_6, trans_1);
+        vec3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, (ray_19.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
     }
     vec3 _e46 = light;
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25 * INV_PI))) * _e46));
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_21, float t_1, vec3 radiance_1) {
+vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_20, float t_1, vec3 radiance_1) {
     Fog _e4 = load_Fog(offset_9);
-    vec3 _e5 = fog_medium(_e4, ray_21, t_1, radiance_1);
+    vec3 _e5 = fog_medium(_e4, ray_20, t_1, radiance_1);
     return _e5;
 }
 
-vec3 through_medium(Ray ray_22, float t_2, vec3 radiance_2) {
+vec3 through_medium(Ray ray_21, float t_2, vec3 radiance_2) {
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if ((ray_22.medium == 0u)) {
+    if ((ray_21.medium == 0u)) {
         return radiance_2;
     }
-    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_22.medium - 1u)];
+    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_21.medium - 1u)];
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_2;
     }
-    shading_medium(ray_22.medium);
-    vec3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_22, t_2, radiance_2);
+    shading_medium(ray_21.medium);
+    vec3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2);
     return _e22;
 }
 
@@ -1353,14 +1350,14 @@ void rt_spawn(vec3 dir_4, vec3 weight) {
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_23, Hit hit_7) {
-    rt_spawn(ray_23.dir, vec3(1.0));
+void fog_rays(Fog m_5, Ray ray_22, Hit hit_7) {
+    rt_spawn(ray_22.dir, vec3(1.0));
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_24, Hit hit_8) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_23, Hit hit_8) {
     Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_24, hit_8);
+    fog_rays(_e3, ray_23, hit_8);
     return;
 }
 
@@ -1387,7 +1384,7 @@ vec3 trace(Ray camera_ray) {
     float t_3 = 0.0;
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth_1 = 0u;
-    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1427,7 +1424,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth_1 = 0u;
-    ray_25 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1443,10 +1440,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1623,7 +1620,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e372 = spawn_origin(hit_13, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_25 = Ray(_e372, 0.0, dir_8, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_24 = Ray(_e372, 0.0, dir_8, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             Ray _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;

@@ -489,16 +489,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_26 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_26;
+    const Ray ray_25 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_25;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_27 = _e4;
-    return ray_27;
+    const Ray ray_26 = _e4;
+    return ray_26;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -527,8 +527,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_28 = _e25;
-    return ray_28;
+    const Ray ray_27 = _e25;
+    return ray_27;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -581,8 +581,11 @@ BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float 
     return ret;
 }
 
-BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+BoxRay box_ray(GpuNode header_1, Ray ray_2)
 {
+    float3 origin_2 = header_1.min_;
+    const float3 _e3 = node_frame_hi(header_1);
+    float3 extent = (_e3 - origin_2);
     float m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_6) >> 23u) & 255u), 1u), 253u);
     float3 d_4 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
@@ -590,19 +593,11 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     float3 floor_ = (9.094947e-13).xxx;
     float3 s_4 = ((d_4 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
     float3 inv = ((1.0).xxx / ((abs(d_4) < floor_) ? (s_4 * floor_) : d_4));
-    float3 rel = (origin_1 - ray_2.origin);
+    float3 rel = (origin_2 - ray_2.origin);
     float3 start = (rel * inv);
-    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    const BoxRay boxray = ConstructBoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
-{
-    const float3 _e4 = node_frame_hi(header_1);
-    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    const BoxRay boxray_1 = _e7;
-    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -639,9 +634,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_12 ? float3(t_5, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-float point_error(float3 origin_2, float3 along)
+float point_error(float3 origin_1, float3 along)
 {
-    float3 a_5 = (abs(origin_2) + abs(along));
+    float3 a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -740,16 +735,16 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Hit finish_hit(Ray ray_4, Candidate c)
+Hit finish_hit(Ray ray_3, Candidate c)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(c.slot*128+0)), asfloat(instances.Load4(c.slot*128+16)), asfloat(instances.Load4(c.slot*128+32)), asfloat(instances.Load4(c.slot*128+48)), asfloat(instances.Load4(c.slot*128+64)), asfloat(instances.Load4(c.slot*128+80)), asuint(instances.Load(c.slot*128+96)), asuint(instances.Load(c.slot*128+100)), asuint(instances.Load(c.slot*128+104)), asuint(instances.Load(c.slot*128+108)), asuint(instances.Load(c.slot*128+112)), asuint(instances.Load(c.slot*128+116)), asuint(instances.Load(c.slot*128+120)), asuint(instances.Load(c.slot*128+124)));
-    const float _e11 = point_error(ray_4.origin, (ray_4.dir * (c.t).xxx));
+    const float _e11 = point_error(ray_3.origin, (ray_3.dir * (c.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_4.origin + (ray_4.dir * (c.t).xxx)), c.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c.uv, true, inst_6.object, c.primitive);
+    hit = ConstructHit((ray_3.origin + (ray_3.dir * (c.t).xxx)), c.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c.uv, true, inst_6.object, c.primitive);
     n_geo = c.normal;
     n_shade = c.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -793,7 +788,7 @@ Hit finish_hit(Ray ray_4, Candidate c)
     const float3 _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_4.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_3.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_13 = _e151;
     return hit_13;
@@ -855,30 +850,30 @@ void absorb_query(float density)
     return;
 }
 
-bool fog_any_hit(Fog m, Ray ray_5, Hit hit_1)
+bool fog_any_hit(Fog m, Ray ray_4, Hit hit_1)
 {
     absorb_query(m.density);
-    return (ray_5.kind != RAY_SHADOW);
+    return (ray_4.kind != RAY_SHADOW);
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_2)
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_5, Hit hit_2)
 {
     const Fog _e3 = load_Fog(offset_3);
-    const bool _e4 = fog_any_hit(_e3, ray_6, hit_2);
+    const bool _e4 = fog_any_hit(_e3, ray_5, hit_2);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_1)
+bool accept(GpuInstance inst_4, Ray ray_6, Candidate c_1)
 {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        const Hit _e10 = finish_hit(ray_7, c_1);
+        const Hit _e10 = finish_hit(ray_6, c_1);
         hit_error = shaded;
-        if ((ray_7.kind == RAY_SHADOW)) {
+        if ((ray_6.kind == RAY_SHADOW)) {
             scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(uint(min(SCRATCH_ABSORB_T, 14u)), 14u)] = asuint((c_1.t * length(ray_7.dir)));
+            scratch[min(uint(min(SCRATCH_ABSORB_T, 14u)), 14u)] = asuint((c_1.t * length(ray_6.dir)));
         }
-        const bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
+        const bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
         scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 0u;
         return _e36;
     }
@@ -947,7 +942,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_8, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_7, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -957,10 +952,10 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_8);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_7);
     uint base_1 = inst_5.blas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    const BoxRay _e12 = header_box_ray(header_2, ray_8);
+    const BoxRay _e12 = box_ray(header_2, ray_7);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -991,7 +986,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                const float3 _e46 = hit_triangle(_e7, prim, ray_8.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                const float3 _e46 = hit_triangle(_e7, prim, ray_7.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
@@ -1061,17 +1056,17 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return candidate_2;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_9, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(slot_3*128+0)), asfloat(instances.Load4(slot_3*128+16)), asfloat(instances.Load4(slot_3*128+32)), asfloat(instances.Load4(slot_3*128+48)), asfloat(instances.Load4(slot_3*128+64)), asfloat(instances.Load4(slot_3*128+80)), asuint(instances.Load(slot_3*128+96)), asuint(instances.Load(slot_3*128+100)), asuint(instances.Load(slot_3*128+104)), asuint(instances.Load(slot_3*128+108)), asuint(instances.Load(slot_3*128+112)), asuint(instances.Load(slot_3*128+116)), asuint(instances.Load(slot_3*128+120)), asuint(instances.Load(slot_3*128+124)));
-    const Ray _e7 = to_object(inst_7, ray_9);
+    const Ray _e7 = to_object(inst_7, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1133,20 +1128,20 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_10 = (Ray)0;
+    Ray ray_9 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    float3 _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    float3 _e15 = ray_9.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
-    const Ray ray_29 = _e18;
-    return ray_29;
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    const Ray ray_28 = _e18;
+    return ray_28;
 }
 
 float3 node_frame_bounds()
@@ -1154,7 +1149,7 @@ float3 node_frame_bounds()
     return (65535.0).xxx;
 }
 
-Candidate intersect_scene(Ray ray_11, bool shadow_2)
+Candidate intersect_scene(Ray ray_10, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1164,7 +1159,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_11.tmax);
+    const Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1174,7 +1169,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    const BoxRay _e19 = header_box_ray(header_3, ray_11);
+    const BoxRay _e19 = box_ray(header_3, ray_10);
     const float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
@@ -1196,7 +1191,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1261,18 +1256,18 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_4, Ray ray_12)
+float3 dispatch_miss(uint type_id_2, uint offset_4, Ray ray_11)
 {
     return ZeroValuefloat3();
 }
 
-float3 miss(Ray ray_13)
+float3 miss(Ray ray_12)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1282,7 +1277,7 @@ void shading_medium(uint medium)
     return;
 }
 
-float3 fog_shade(Fog m_1, Ray ray_14, Hit hit_3, float3 secondary)
+float3 fog_shade(Fog m_1, Ray ray_13, Hit hit_3, float3 secondary)
 {
     return secondary;
 }
@@ -1302,9 +1297,9 @@ Lambert load_Lambert(uint offset_5)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_15, Hit hit_4)
+float3 shading_normal(Ray ray_14, Hit hit_4)
 {
-    float3 ng = faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
+    float3 ng = faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1396,11 +1391,11 @@ Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd)));
     }
     float _e59 = tmax_4;
-    const Ray ray_30 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_30;
+    const Ray ray_29 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_29;
 }
 
-float shadow_transmittance(Ray ray_16, uint medium_1)
+float shadow_transmittance(Ray ray_15, uint medium_1)
 {
     float depth = (float)0;
 
@@ -1412,15 +1407,15 @@ float shadow_transmittance(Ray ray_16, uint medium_1)
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((medium_1 - 1u)*128+0)), asfloat(instances.Load4((medium_1 - 1u)*128+16)), asfloat(instances.Load4((medium_1 - 1u)*128+32)), asfloat(instances.Load4((medium_1 - 1u)*128+48)), asfloat(instances.Load4((medium_1 - 1u)*128+64)), asfloat(instances.Load4((medium_1 - 1u)*128+80)), asuint(instances.Load((medium_1 - 1u)*128+96)), asuint(instances.Load((medium_1 - 1u)*128+100)), asuint(instances.Load((medium_1 - 1u)*128+104)), asuint(instances.Load((medium_1 - 1u)*128+108)), asuint(instances.Load((medium_1 - 1u)*128+112)), asuint(instances.Load((medium_1 - 1u)*128+116)), asuint(instances.Load((medium_1 - 1u)*128+120)), asuint(instances.Load((medium_1 - 1u)*128+124)));
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
-                Hit start_1 = ConstructHit(ray_16.origin, 0.0, -(ray_16.dir), -(ray_16.dir), (0.0).xx, true, inst_8.object, 0u);
+                Hit start_1 = ConstructHit(ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), (0.0).xx, true, inst_8.object, 0u);
                 scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 1u;
                 scratch[min(uint(min(SCRATCH_ABSORB_T, 14u)), 14u)] = 0u;
-                const bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_16, start_1);
+                const bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1);
                 scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 0u;
             }
         }
     }
-    const Candidate _e75 = intersect_scene(ray_16, true);
+    const Candidate _e75 = intersect_scene(ray_15, true);
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
@@ -1431,11 +1426,11 @@ float shadow_transmittance(Ray ray_16, uint medium_1)
     uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 14u)), 14u)];
     if ((net_1 > (1e-6 * asfloat(_e101)))) {
         uint _e107 = F32_INF;
-        if ((ray_16.tmax == asfloat(_e107))) {
+        if ((ray_15.tmax == asfloat(_e107))) {
             return 0.0;
         }
         float _e111 = depth;
-        depth = (_e111 + (net_1 * (ray_16.tmax * length(ray_16.dir))));
+        depth = (_e111 + (net_1 * (ray_15.tmax * length(ray_15.dir))));
     }
     float _e118 = depth;
     return exp(-(max(_e118, 0.0)));
@@ -1503,12 +1498,12 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_2, Ray ray_17, Hit hit_5)
+float3 lambert_shade(Lambert m_2, Ray ray_16, Hit hit_5)
 {
     float3 color = (float3)0;
     uint i_3 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_17, hit_5);
+    const float3 _e3 = shading_normal(ray_16, hit_5);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1535,17 +1530,17 @@ float3 lambert_shade(Lambert m_2, Ray ray_17, Hit hit_5)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_18, Hit hit_6, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_17, Hit hit_6, float3 secondary_1)
 {
     switch(type_id_4) {
         case 0u: {
             const Fog _e5 = load_Fog(offset_8);
-            const float3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
+            const float3 _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             const Lambert _e7 = load_Lambert(offset_8);
-            const float3 _e8 = lambert_shade(_e7, ray_18, hit_6);
+            const float3 _e8 = lambert_shade(_e7, ray_17, hit_6);
             return _e8;
         }
         default: {
@@ -1555,12 +1550,12 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_18, Hit hit_6
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_19, Candidate c_2)
+float3 shade_direct(Ray ray_18, Candidate c_2)
 {
     GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_19, c_2);
-    shading_medium(ray_19.medium);
-    const float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_18, c_2);
+    shading_medium(ray_18.medium);
+    const float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, (0.0).xxx);
     return _e12;
 }
 
@@ -1610,12 +1605,12 @@ float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_3, float d, float t
     return (_e97.radiance * (((sigma_1 * e_4) / pdf)).xxx);
 }
 
-float3 fog_medium(Fog m_4, Ray ray_20, float t, float3 radiance)
+float3 fog_medium(Fog m_4, Ray ray_19, float t, float3 radiance)
 {
     float3 light = (float3)0;
     uint i_6 = (uint)0;
 
-    float len = length(ray_20.dir);
+    float len = length(ray_19.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
@@ -1640,34 +1635,34 @@ float3 fog_medium(Fog m_4, Ray ray_20, float t, float3 radiance)
         }
         float3 _e27 = light;
         uint _e28 = i_6;
-        const float3 _e33 = fog_inscatter(m_4, _e28, ray_20.origin, (ray_20.dir / (len).xxx), d_6, trans_1);
+        const float3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, (ray_19.dir / (len).xxx), d_6, trans_1);
         light = (_e27 + _e33);
     }
     float3 _e46 = light;
     return ((radiance * (trans_1).xxx) + ((m_4.albedo * ((0.25 * INV_PI)).xxx) * _e46));
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_21, float t_1, float3 radiance_1)
+float3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_20, float t_1, float3 radiance_1)
 {
     const Fog _e4 = load_Fog(offset_9);
-    const float3 _e5 = fog_medium(_e4, ray_21, t_1, radiance_1);
+    const float3 _e5 = fog_medium(_e4, ray_20, t_1, radiance_1);
     return _e5;
 }
 
-float3 through_medium(Ray ray_22, float t_2, float3 radiance_2)
+float3 through_medium(Ray ray_21, float t_2, float3 radiance_2)
 {
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if ((ray_22.medium == 0u)) {
+    if ((ray_21.medium == 0u)) {
         return radiance_2;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_22.medium - 1u)*128+0)), asfloat(instances.Load4((ray_22.medium - 1u)*128+16)), asfloat(instances.Load4((ray_22.medium - 1u)*128+32)), asfloat(instances.Load4((ray_22.medium - 1u)*128+48)), asfloat(instances.Load4((ray_22.medium - 1u)*128+64)), asfloat(instances.Load4((ray_22.medium - 1u)*128+80)), asuint(instances.Load((ray_22.medium - 1u)*128+96)), asuint(instances.Load((ray_22.medium - 1u)*128+100)), asuint(instances.Load((ray_22.medium - 1u)*128+104)), asuint(instances.Load((ray_22.medium - 1u)*128+108)), asuint(instances.Load((ray_22.medium - 1u)*128+112)), asuint(instances.Load((ray_22.medium - 1u)*128+116)), asuint(instances.Load((ray_22.medium - 1u)*128+120)), asuint(instances.Load((ray_22.medium - 1u)*128+124)));
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_21.medium - 1u)*128+0)), asfloat(instances.Load4((ray_21.medium - 1u)*128+16)), asfloat(instances.Load4((ray_21.medium - 1u)*128+32)), asfloat(instances.Load4((ray_21.medium - 1u)*128+48)), asfloat(instances.Load4((ray_21.medium - 1u)*128+64)), asfloat(instances.Load4((ray_21.medium - 1u)*128+80)), asuint(instances.Load((ray_21.medium - 1u)*128+96)), asuint(instances.Load((ray_21.medium - 1u)*128+100)), asuint(instances.Load((ray_21.medium - 1u)*128+104)), asuint(instances.Load((ray_21.medium - 1u)*128+108)), asuint(instances.Load((ray_21.medium - 1u)*128+112)), asuint(instances.Load((ray_21.medium - 1u)*128+116)), asuint(instances.Load((ray_21.medium - 1u)*128+120)), asuint(instances.Load((ray_21.medium - 1u)*128+124)));
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_2;
     }
-    shading_medium(ray_22.medium);
-    const float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_22, t_2, radiance_2);
+    shading_medium(ray_21.medium);
+    const float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2);
     return _e22;
 }
 
@@ -1681,16 +1676,16 @@ void rt_spawn(float3 dir_4, float3 weight)
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_23, Hit hit_7)
+void fog_rays(Fog m_5, Ray ray_22, Hit hit_7)
 {
-    rt_spawn(ray_23.dir, (1.0).xxx);
+    rt_spawn(ray_22.dir, (1.0).xxx);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_24, Hit hit_8)
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_23, Hit hit_8)
 {
     const Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_24, hit_8);
+    fog_rays(_e3, ray_23, hit_8);
     return;
 }
 
@@ -1745,7 +1740,7 @@ float3 trace(Ray camera_ray)
     float t_3 = (float)0;
     Frame stack[3] = (Frame[3])0;
     uint depth_1 = (uint)0;
-    Ray ray_25 = (Ray)0;
+    Ray ray_24 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1786,7 +1781,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray3_Frame_();
     depth_1 = 0u;
-    ray_25 = camera_ray;
+    ray_24 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1805,10 +1800,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_24;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1991,7 +1986,7 @@ float3 trace(Ray camera_ray)
             const float3 _e372 = spawn_origin(hit_14, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_25 = ConstructRay(_e372, 0.0, dir_8, asfloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_24 = ConstructRay(_e372, 0.0, dir_8, asfloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             Ray _e387 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
             s_ray = _e387;

@@ -554,11 +554,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_6 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_6) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_4 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -566,19 +567,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_4 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_4, s_4 * floor, metal::abs(d_4) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_4;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -624,10 +616,10 @@ metal::float3 hit_triangle(
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_5 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_5 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
 }
 
@@ -698,7 +690,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_4,
+    Ray ray_3,
     Candidate c,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -710,9 +702,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_6 = instances[c.slot];
-    float _e11 = point_error(ray_4.origin, ray_4.dir * metal::float3(c.t));
+    float _e11 = point_error(ray_3.origin, ray_3.dir * metal::float3(c.t));
     hit_error = _e11;
-    hit = Hit {ray_4.origin + (ray_4.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
+    hit = Hit {ray_3.origin + (ray_3.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
     n_geo = c.normal;
     n_shade = c.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -753,7 +745,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_4.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_3.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -813,31 +805,31 @@ void absorb_query(
 
 bool fog_any_hit(
     Fog m,
-    Ray ray_5,
+    Ray ray_4,
     Hit hit_1,
     thread type_4& scratch
 ) {
     absorb_query(m.density, scratch);
-    return ray_5.kind != RAY_SHADOW;
+    return ray_4.kind != RAY_SHADOW;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_6,
+    Ray ray_5,
     Hit hit_2,
     thread type_4& scratch,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_3, params, _buffer_sizes);
-    bool _e4 = fog_any_hit(_e3, ray_6, hit_2, scratch);
+    bool _e4 = fog_any_hit(_e3, ray_5, hit_2, scratch);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_4,
-    Ray ray_7,
+    Ray ray_6,
     Candidate c_1,
     thread type_4& scratch,
     device type_5 const& params,
@@ -849,13 +841,13 @@ bool accept(
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_7, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e10 = finish_hit(ray_6, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        if (ray_7.kind == RAY_SHADOW) {
+        if (ray_6.kind == RAY_SHADOW) {
             scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = _e10.front_face ? 1u : 2u;
-            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_7.dir));
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_6.dir));
         }
-        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10, scratch, params, _buffer_sizes);
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10, scratch, params, _buffer_sizes);
         scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
@@ -933,7 +925,7 @@ Candidate intersect_mesh(
     GpuInstance inst_5,
     uint slot_2,
     Ray world_ray,
-    Ray ray_8,
+    Ray ray_7,
     Candidate best_in,
     bool shadow,
     thread type_4& scratch,
@@ -954,10 +946,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_8);
+    TriangleRay _e7 = prepare_triangle_ray(ray_7);
     uint base_1 = inst_5.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_8);
+    BoxRay _e12 = box_ray(header_2, ray_7);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -988,7 +980,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_5.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_8.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_7.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -1058,7 +1050,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_9,
+    Ray ray_8,
     Candidate best_1,
     bool shadow_1,
     thread type_4& scratch,
@@ -1074,12 +1066,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_7 = instances[slot_3];
-    Ray _e7 = to_object(inst_7, ray_9);
+    Ray _e7 = to_object(inst_7, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1166,17 +1158,17 @@ Ray sample_camera_ray(
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_10 = {};
+    Ray ray_9 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_9.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
     return _e18;
 }
 
@@ -1186,7 +1178,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_11,
+    Ray ray_10,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1208,7 +1200,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1217,7 +1209,7 @@ Candidate intersect_scene(
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    BoxRay _e19 = box_ray(header_3, ray_10);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1238,7 +1230,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_11, _e54, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_10, _e54, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1300,20 +1292,20 @@ Candidate intersect_scene(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_4,
-    Ray ray_12
+    Ray ray_11
 ) {
     return metal::float3 {};
 }
 
 metal::float3 miss(
-    Ray ray_13,
+    Ray ray_12,
     constant FrameUniforms& frame
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1327,7 +1319,7 @@ void shading_medium(
 
 metal::float3 fog_shade(
     Fog m_1,
-    Ray ray_14,
+    Ray ray_13,
     Hit hit_3,
     metal::float3 secondary
 ) {
@@ -1346,10 +1338,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_15,
+    Ray ray_14,
     Hit hit_4
 ) {
-    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1451,7 +1443,7 @@ Ray shadow_ray(
 }
 
 float shadow_transmittance(
-    Ray ray_16,
+    Ray ray_15,
     uint medium_1,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1475,15 +1467,15 @@ float shadow_transmittance(
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                Hit start_1 = Hit {ray_16.origin, 0.0, -(ray_16.dir), -(ray_16.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
+                Hit start_1 = Hit {ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_16, start_1, scratch, params, _buffer_sizes);
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1, scratch, params, _buffer_sizes);
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    Candidate _e75 = intersect_scene(ray_16, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Candidate _e75 = intersect_scene(ray_15, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     if (_e75.slot != NO_HIT) {
         return 0.0;
     }
@@ -1494,11 +1486,11 @@ float shadow_transmittance(
     uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001 * as_type<float>(_e101))) {
         uint _e107 = F32_INF;
-        if (ray_16.tmax == as_type<float>(_e107)) {
+        if (ray_15.tmax == as_type<float>(_e107)) {
             return 0.0;
         }
         float _e111 = depth;
-        depth = _e111 + (net_1 * (ray_16.tmax * metal::length(ray_16.dir)));
+        depth = _e111 + (net_1 * (ray_15.tmax * metal::length(ray_15.dir)));
     }
     float _e118 = depth;
     return metal::exp(-(metal::max(_e118, 0.0)));
@@ -1616,7 +1608,7 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_17,
+    Ray ray_16,
     Hit hit_5,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1633,7 +1625,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_17, hit_5);
+    metal::float3 _e3 = shading_normal(ray_16, hit_5);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_3 = 0u;
@@ -1663,7 +1655,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_8,
-    Ray ray_18,
+    Ray ray_17,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1682,12 +1674,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
+            metal::float3 _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_17, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1698,7 +1690,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_19,
+    Ray ray_18,
     Candidate c_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1714,9 +1706,9 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    shading_medium(ray_19.medium, scratch);
-    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    shading_medium(ray_18.medium, scratch);
+    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e12;
 }
 
@@ -1800,7 +1792,7 @@ metal::float3 fog_inscatter(
 
 metal::float3 fog_medium(
     Fog m_4,
-    Ray ray_20,
+    Ray ray_19,
     float t,
     metal::float3 radiance,
     constant FrameUniforms& frame,
@@ -1819,7 +1811,7 @@ metal::float3 fog_medium(
 ) {
     metal::float3 light = {};
     uint i_6 = {};
-    float len = metal::length(ray_20.dir);
+    float len = metal::length(ray_19.dir);
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
@@ -1844,7 +1836,7 @@ metal::float3 fog_medium(
         }
         metal::float3 _e27 = light;
         uint _e28 = i_6;
-        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_20.origin, ray_20.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, ray_19.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1854,7 +1846,7 @@ metal::float3 fog_medium(
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_9,
-    Ray ray_21,
+    Ray ray_20,
     float t_1,
     metal::float3 radiance_1,
     constant FrameUniforms& frame,
@@ -1872,12 +1864,12 @@ metal::float3 dispatch_medium(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e4 = load_Fog(offset_9, params, _buffer_sizes);
-    metal::float3 _e5 = fog_medium(_e4, ray_21, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e5 = fog_medium(_e4, ray_20, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e5;
 }
 
 metal::float3 through_medium(
-    Ray ray_22,
+    Ray ray_21,
     float t_2,
     metal::float3 radiance_2,
     constant FrameUniforms& frame,
@@ -1897,15 +1889,15 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if (ray_22.medium == 0u) {
+    if (ray_21.medium == 0u) {
         return radiance_2;
     }
-    GpuInstance inst_10 = instances[ray_22.medium - 1u];
+    GpuInstance inst_10 = instances[ray_21.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    shading_medium(ray_22.medium, scratch);
-    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_22, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    shading_medium(ray_21.medium, scratch);
+    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e22;
 }
 
@@ -1926,20 +1918,20 @@ void rt_spawn(
 
 void fog_rays(
     Fog m_5,
-    Ray ray_23,
+    Ray ray_22,
     Hit hit_7,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    rt_spawn(ray_23.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
+    rt_spawn(ray_22.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_10,
-    Ray ray_24,
+    Ray ray_23,
     Hit hit_8,
     device type_5 const& params,
     thread type_16& spawn_dirs,
@@ -1948,7 +1940,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_10, params, _buffer_sizes);
-    fog_rays(_e3, ray_24, hit_8, spawn_dirs, spawn_weights, spawn_count);
+    fog_rays(_e3, ray_23, hit_8, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -2002,7 +1994,7 @@ metal::float3 trace(
     float t_3 = {};
     type_17 stack = {};
     uint depth_1 = {};
-    Ray ray_25 = {};
+    Ray ray_24 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2042,7 +2034,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth_1 = 0u;
-    ray_25 = camera_ray;
+    ray_24 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2061,10 +2053,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2247,7 +2239,7 @@ metal::float3 trace(
             metal::float3 _e372 = spawn_origin(hit_13, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_25 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
+            ray_24 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
         } else {
             Ray _e387 = stack.inner[metal::min(top_1, 2u)].ray;
             s_ray = _e387;

@@ -456,7 +456,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_6) >> 23u) & 255u), 1u), 253u);
     let d_4 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -464,16 +467,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_4 = select(vec3(1f), vec3(-1f), (d_4 < vec3(0f)));
     let inv = (vec3(1f) / select(d_4, (s_4 * floor_), (abs(d_4) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -509,8 +506,8 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_5, (v_2 * rcp), (w * rcp)), hit_12);
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_5 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -563,15 +560,15 @@ fn normal_to_world(inst_3: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_4: Ray, c: Candidate) -> Hit {
+fn finish_hit(ray_3: Ray, c: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_6 = instances[c.slot];
-    let _e11 = point_error(ray_4.origin, (ray_4.dir * vec3(c.t)));
+    let _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c.t)));
     hit_error = _e11;
-    hit = Hit((ray_4.origin + (ray_4.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_6.object, c.primitive);
+    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_6.object, c.primitive);
     n_geo = c.normal;
     n_shade = c.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -612,7 +609,7 @@ fn finish_hit(ray_4: Ray, c: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_6, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_4.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_3.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -662,27 +659,27 @@ fn absorb_query(density: f32) {
     return;
 }
 
-fn fog_any_hit(m: Fog, ray_5: Ray, hit_1: Hit) -> bool {
+fn fog_any_hit(m: Fog, ray_4: Ray, hit_1: Hit) -> bool {
     absorb_query(m.density);
-    return (ray_5.kind != RAY_SHADOW);
+    return (ray_4.kind != RAY_SHADOW);
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_6: Ray, hit_2: Hit) -> bool {
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_5: Ray, hit_2: Hit) -> bool {
     let _e3 = load_Fog(offset_3);
-    let _e4 = fog_any_hit(_e3, ray_6, hit_2);
+    let _e4 = fog_any_hit(_e3, ray_5, hit_2);
     return _e4;
 }
 
-fn accept(inst_4: GpuInstance, ray_7: Ray, c_1: Candidate) -> bool {
+fn accept(inst_4: GpuInstance, ray_6: Ray, c_1: Candidate) -> bool {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e10 = finish_hit(ray_7, c_1);
+        let _e10 = finish_hit(ray_6, c_1);
         hit_error = shaded;
-        if (ray_7.kind == RAY_SHADOW) {
+        if (ray_6.kind == RAY_SHADOW) {
             scratch[min(SCRATCH_ABSORB, 14u)] = select(2u, 1u, _e10.front_face);
-            scratch[min(SCRATCH_ABSORB_T, 14u)] = bitcast<u32>((c_1.t * length(ray_7.dir)));
+            scratch[min(SCRATCH_ABSORB_T, 14u)] = bitcast<u32>((c_1.t * length(ray_6.dir)));
         }
-        let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
+        let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
         scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
@@ -737,7 +734,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -746,10 +743,10 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_8);
+    let _e7 = prepare_triangle_ray(ray_7);
     let base_1 = inst_5.blas_root;
     let header_2 = nodes[base_1];
-    let _e12 = header_box_ray(header_2, ray_8);
+    let _e12 = box_ray(header_2, ray_7);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -768,7 +765,7 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
                 let _e38 = k;
                 let prim = ((inst_5.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_8.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_7.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -840,16 +837,16 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
     return _e138;
 }
 
-fn intersect_object(slot_3: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_7 = instances[slot_3];
-    let _e7 = to_object(inst_7, ray_9);
+    let _e7 = to_object(inst_7, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -902,18 +899,18 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_10: Ray;
+    var ray_9: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    let _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    let _e15 = ray_9.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    let _e18 = ray_10;
+    ray_9.medium = _e17;
+    let _e18 = ray_9;
     return _e18;
 }
 
@@ -921,7 +918,7 @@ fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -930,7 +927,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_11.tmax);
+    let _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -939,7 +936,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     }
     let base_2 = frame_3.tlas_root;
     let header_3 = nodes[base_2];
-    let _e19 = header_box_ray(header_3, ray_11);
+    let _e19 = box_ray(header_3, ray_10);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -957,7 +954,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1016,16 +1013,16 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     return _e119;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_12: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_11: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_13: Ray) -> vec3<f32> {
+fn miss(ray_12: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1034,7 +1031,7 @@ fn shading_medium(medium: u32) {
     return;
 }
 
-fn fog_shade(m_1: Fog, ray_14: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn fog_shade(m_1: Fog, ray_13: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -1045,8 +1042,8 @@ fn load_Lambert(offset_5: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_15: Ray, hit_4: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
+fn shading_normal(ray_14: Ray, hit_4: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return faceForward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1124,7 +1121,7 @@ fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: 
     return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_transmittance(ray_16: Ray, medium_1: u32) -> f32 {
+fn shadow_transmittance(ray_15: Ray, medium_1: u32) -> f32 {
     var depth: f32;
 
     scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
@@ -1135,15 +1132,15 @@ fn shadow_transmittance(ray_16: Ray, medium_1: u32) -> f32 {
         if (medium_1 != 0u) {
             let inst_8 = instances[(medium_1 - 1u)];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                let start_1 = Hit(ray_16.origin, 0f, -(ray_16.dir), -(ray_16.dir), vec2(0f), true, inst_8.object, 0u);
+                let start_1 = Hit(ray_15.origin, 0f, -(ray_15.dir), -(ray_15.dir), vec2(0f), true, inst_8.object, 0u);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_16, start_1);
+                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start_1);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    let _e75 = intersect_scene(ray_16, true);
+    let _e75 = intersect_scene(ray_15, true);
     if (_e75.slot != NO_HIT) {
         return 0f;
     }
@@ -1154,11 +1151,11 @@ fn shadow_transmittance(ray_16: Ray, medium_1: u32) -> f32 {
     let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
         let _e107 = F32_INF;
-        if (ray_16.tmax == bitcast<f32>(_e107)) {
+        if (ray_15.tmax == bitcast<f32>(_e107)) {
             return 0f;
         }
         let _e111 = depth;
-        depth = (_e111 + (net_1 * (ray_16.tmax * length(ray_16.dir))));
+        depth = (_e111 + (net_1 * (ray_15.tmax * length(ray_15.dir))));
     }
     let _e118 = depth;
     return exp(-(max(_e118, 0f)));
@@ -1209,11 +1206,11 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn lambert_shade(m_2: Lambert, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_16: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_17, hit_5);
+    let _e3 = shading_normal(ray_16, hit_5);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_3 = 0u;
@@ -1235,16 +1232,16 @@ fn lambert_shade(m_2: Lambert, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_18: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_17: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_Fog(offset_8);
-            let _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
+            let _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_8);
-            let _e8 = lambert_shade(_e7, ray_18, hit_6);
+            let _e8 = lambert_shade(_e7, ray_17, hit_6);
             return _e8;
         }
         default: {
@@ -1253,11 +1250,11 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_18: Ray, hit_6: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_18: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_19, c_2);
-    shading_medium(ray_19.medium);
-    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_18, c_2);
+    shading_medium(ray_18.medium);
+    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, vec3(0f));
     return _e12;
 }
 
@@ -1304,11 +1301,11 @@ fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d: f32, tra
     return (_e97.radiance * vec3(((sigma_1 * e_4) / pdf)));
 }
 
-fn fog_medium(m_4: Fog, ray_20: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_4: Fog, ray_19: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
     var i_6: u32;
 
-    let len = length(ray_20.dir);
+    let len = length(ray_19.dir);
     if (!((m_4.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
@@ -1324,7 +1321,7 @@ fn fog_medium(m_4: Fog, ray_20: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
         }
         let _e27 = light;
         let _e28 = i_6;
-        let _e33 = fog_inscatter(m_4, _e28, ray_20.origin, (ray_20.dir / vec3(len)), d_6, trans_1);
+        let _e33 = fog_inscatter(m_4, _e28, ray_19.origin, (ray_19.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
         continuing {
             let _e35 = i_6;
@@ -1335,25 +1332,25 @@ fn fog_medium(m_4: Fog, ray_20: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_21: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_20: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     let _e4 = load_Fog(offset_9);
-    let _e5 = fog_medium(_e4, ray_21, t_1, radiance_1);
+    let _e5 = fog_medium(_e4, ray_20, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_22: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_21: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
-    if (ray_22.medium == 0u) {
+    if (ray_21.medium == 0u) {
         return radiance_2;
     }
-    let inst_10 = instances[(ray_22.medium - 1u)];
+    let inst_10 = instances[(ray_21.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    shading_medium(ray_22.medium);
-    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_22, t_2, radiance_2);
+    shading_medium(ray_21.medium);
+    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2);
     return _e22;
 }
 
@@ -1366,14 +1363,14 @@ fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn fog_rays(m_5: Fog, ray_23: Ray, hit_7: Hit) {
-    rt_spawn(ray_23.dir, vec3(1f));
+fn fog_rays(m_5: Fog, ray_22: Ray, hit_7: Hit) {
+    rt_spawn(ray_22.dir, vec3(1f));
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_24: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_23: Ray, hit_8: Hit) {
     let _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_24, hit_8);
+    fog_rays(_e3, ray_23, hit_8);
     return;
 }
 
@@ -1401,7 +1398,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_3: f32;
     var stack: array<Frame, 3>;
     var depth_1: u32;
-    var ray_25: Ray;
+    var ray_24: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1442,7 +1439,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 3>();
     depth_1 = 0u;
-    ray_25 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1458,10 +1455,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_25;
+            let _e67 = ray_24;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_25;
+            let _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1636,7 +1633,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e372 = spawn_origin(hit_13, _e371, dir_8);
             let _e375 = F32_INF;
             let _e381 = medium_2;
-            ray_25 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_24 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             let _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;

@@ -528,11 +528,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_4 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_4) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -540,19 +541,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_3 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_3;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_3;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -599,7 +591,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -676,7 +668,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -692,10 +684,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -726,7 +718,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -796,7 +788,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_6,
+    Ray ray_5,
     Candidate best_1,
     bool shadow_1,
     thread uint& F32_INF,
@@ -808,22 +800,22 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_6);
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_5 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_5 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
 }
 
@@ -894,7 +886,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_7,
+    Ray ray_6,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -906,9 +898,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_7.origin, ray_7.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_7.origin + (ray_7.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -949,7 +941,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_7.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1034,17 +1026,17 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_8 = {};
+    Ray ray_7 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_8.medium = _e17;
-    Ray _e18 = ray_8;
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
     return _e18;
 }
 
@@ -1054,7 +1046,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_9,
+    Ray ray_8,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1072,7 +1064,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1081,7 +1073,7 @@ Candidate intersect_scene(
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_9);
+    BoxRay _e19 = box_ray(header_3, ray_8);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1102,7 +1094,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_9, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_8, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1180,9 +1172,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_6,
-    Ray ray_10
+    Ray ray_9
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_10.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_6.horizon, b_6.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1193,17 +1185,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_11,
+    Ray ray_10,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_11);
+    metal::float3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_12,
+    Ray ray_11,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1212,7 +1204,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1230,7 +1222,7 @@ Glass load_Glass(
 
 metal::float3 glass_shade(
     Glass m,
-    Ray ray_13,
+    Ray ray_12,
     Hit hit_1,
     metal::float3 secondary
 ) {
@@ -1250,7 +1242,7 @@ Mirror load_Mirror(
 
 metal::float3 mirror_shade(
     Mirror m_1,
-    Ray ray_14,
+    Ray ray_13,
     Hit hit_2,
     metal::float3 secondary_1
 ) {
@@ -1260,7 +1252,7 @@ metal::float3 mirror_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_2,
     uint offset_6,
-    Ray ray_15,
+    Ray ray_14,
     Hit hit_3,
     metal::float3 secondary_2,
     device type_5 const& params,
@@ -1269,12 +1261,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_2) {
         case 0u: {
             Glass _e5 = load_Glass(offset_6, params, _buffer_sizes);
-            metal::float3 _e6 = glass_shade(_e5, ray_15, hit_3, secondary_2);
+            metal::float3 _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
             Mirror _e7 = load_Mirror(offset_6, params, _buffer_sizes);
-            metal::float3 _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_2);
+            metal::float3 _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -1285,7 +1277,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_16,
+    Ray ray_15,
     Candidate c_2,
     device type_5 const& params,
     device type_9 const& instances,
@@ -1295,15 +1287,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_16, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, metal::float3(0.0), params, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_15, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, metal::float3(0.0), params, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_3,
     uint offset_7,
-    Ray ray_17,
+    Ray ray_16,
     float t,
     metal::float3 radiance
 ) {
@@ -1311,7 +1303,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_18,
+    Ray ray_17,
     float t_1,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -1320,14 +1312,14 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_18.medium == 0u) {
+    if (ray_17.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_18.medium - 1u];
+    GpuInstance inst_9 = instances[ray_17.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_18, t_1, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
     return _e21;
 }
 
@@ -1363,7 +1355,7 @@ void rt_spawn(
 
 void glass_rays(
     Glass m_2,
-    Ray ray_19,
+    Ray ray_18,
     Hit hit_4,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
@@ -1371,7 +1363,7 @@ void glass_rays(
 ) {
     metal::float3 n_3 = {};
     float eta_1 = {};
-    metal::float3 _e4 = normalize_vec3f(ray_19.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
     n_3 = hit_4.normal;
     eta_1 = 1.0 / m_2.ior;
     if (!(hit_4.front_face)) {
@@ -1399,13 +1391,13 @@ void glass_rays(
 
 void mirror_rays(
     Mirror m_3,
-    Ray ray_20,
+    Ray ray_19,
     Hit hit_5,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_20.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_19.dir);
     rt_spawn(metal::reflect(_e4, hit_5.normal), m_3.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
@@ -1413,7 +1405,7 @@ void mirror_rays(
 void dispatch_secondary_rays(
     uint type_id_4,
     uint offset_8,
-    Ray ray_21,
+    Ray ray_20,
     Hit hit_6,
     device type_5 const& params,
     thread type_16& spawn_dirs,
@@ -1424,12 +1416,12 @@ void dispatch_secondary_rays(
     switch(type_id_4) {
         case 0u: {
             Glass _e4 = load_Glass(offset_8, params, _buffer_sizes);
-            glass_rays(_e4, ray_21, hit_6, spawn_dirs, spawn_weights, spawn_count);
+            glass_rays(_e4, ray_20, hit_6, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 1u: {
             Mirror _e5 = load_Mirror(offset_8, params, _buffer_sizes);
-            mirror_rays(_e5, ray_21, hit_6, spawn_dirs, spawn_weights, spawn_count);
+            mirror_rays(_e5, ray_20, hit_6, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -1510,7 +1502,7 @@ metal::float3 trace(
     float t_2 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_22 = {};
+    Ray ray_21 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1548,7 +1540,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_21 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1567,10 +1559,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_21;
             Candidate _e69 = intersect_scene(_e67, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_21;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -1707,7 +1699,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_11, _e283, dir_3);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = Ray {_e284, 0.0, dir_3, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_21 = Ray {_e284, 0.0, dir_3, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 5u)].ray;
             s_ray = _e299;

@@ -430,7 +430,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_4 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_4) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -438,16 +441,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_3 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_3 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_3);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -483,7 +480,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_10);
 }
 
-fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -535,7 +532,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -544,10 +541,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_5);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_2 = nodes[base_1];
-    let _e12 = header_box_ray(header_2, ray_5);
+    let _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -566,7 +563,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
                 let _e38 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -638,23 +635,23 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     return _e138;
 }
 
-fn intersect_object(slot_2: u32, ray_6: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_6);
+    let _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_5 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -707,15 +704,15 @@ fn normal_to_world(inst_5: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_7: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_7.origin, (ray_7.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_7.origin + (ray_7.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -756,7 +753,7 @@ fn finish_hit(ray_7: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_7.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -808,18 +805,18 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_8: Ray;
+    var ray_7: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    let _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    let _e15 = ray_7.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_8.medium = _e17;
-    let _e18 = ray_8;
+    ray_7.medium = _e17;
+    let _e18 = ray_7;
     return _e18;
 }
 
@@ -827,7 +824,7 @@ fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -836,7 +833,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_9.tmax);
+    let _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -845,7 +842,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     }
     let base_2 = frame_3.tlas_root;
     let header_3 = nodes[base_2];
-    let _e19 = header_box_ray(header_3, ray_9);
+    let _e19 = box_ray(header_3, ray_8);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -863,7 +860,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_8, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -935,8 +932,8 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_6: SkyGradient, ray_10: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_10.dir);
+fn sky_gradient(b_6: SkyGradient, ray_9: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_9.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_6.horizon, b_6.ground, vec3(min((-(y) * 4f), 1f)));
@@ -944,18 +941,18 @@ fn sky_gradient(b_6: SkyGradient, ray_10: Ray) -> vec3<f32> {
     return mix(b_6.horizon, b_6.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_11: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_10: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_3);
-    let _e3 = sky_gradient(_e2, ray_11);
+    let _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
-fn miss(ray_12: Ray) -> vec3<f32> {
+fn miss(ray_11: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -967,7 +964,7 @@ fn load_Glass(offset_4: u32) -> Glass {
     return Glass(bitcast<f32>(_e5), vec3<f32>(bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)));
 }
 
-fn glass_shade(m: Glass, ray_13: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn glass_shade(m: Glass, ray_12: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -978,20 +975,20 @@ fn load_Mirror(offset_5: u32) -> Mirror {
     return Mirror(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn mirror_shade(m_1: Mirror, ray_14: Ray, hit_2: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_1: Mirror, ray_13: Ray, hit_2: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     return secondary_1;
 }
 
-fn dispatch_closest_hit(type_id_2: u32, offset_6: u32, ray_15: Ray, hit_3: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_2: u32, offset_6: u32, ray_14: Ray, hit_3: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
     switch type_id_2 {
         case 0u: {
             let _e5 = load_Glass(offset_6);
-            let _e6 = glass_shade(_e5, ray_15, hit_3, secondary_2);
+            let _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Mirror(offset_6);
-            let _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_2);
+            let _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -1000,29 +997,29 @@ fn dispatch_closest_hit(type_id_2: u32, offset_6: u32, ray_15: Ray, hit_3: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_16: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_15: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_16, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_15, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_3: u32, offset_7: u32, ray_17: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_3: u32, offset_7: u32, ray_16: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_18: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_17: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_18.medium == 0u) {
+    if (ray_17.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_18.medium - 1u)];
+    let inst_9 = instances[(ray_17.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_18, t_1, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
     return _e21;
 }
 
@@ -1047,11 +1044,11 @@ fn rt_spawn(dir: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn glass_rays(m_2: Glass, ray_19: Ray, hit_4: Hit) {
+fn glass_rays(m_2: Glass, ray_18: Ray, hit_4: Hit) {
     var n_3: vec3<f32>;
     var eta_1: f32;
 
-    let _e4 = normalize_vec3f(ray_19.dir);
+    let _e4 = normalize_vec3f(ray_18.dir);
     n_3 = hit_4.normal;
     eta_1 = (1f / m_2.ior);
     if !(hit_4.front_face) {
@@ -1077,22 +1074,22 @@ fn glass_rays(m_2: Glass, ray_19: Ray, hit_4: Hit) {
     return;
 }
 
-fn mirror_rays(m_3: Mirror, ray_20: Ray, hit_5: Hit) {
-    let _e4 = normalize_vec3f(ray_20.dir);
+fn mirror_rays(m_3: Mirror, ray_19: Ray, hit_5: Hit) {
+    let _e4 = normalize_vec3f(ray_19.dir);
     rt_spawn(reflect(_e4, hit_5.normal), m_3.tint);
     return;
 }
 
-fn dispatch_secondary_rays(type_id_4: u32, offset_8: u32, ray_21: Ray, hit_6: Hit) {
+fn dispatch_secondary_rays(type_id_4: u32, offset_8: u32, ray_20: Ray, hit_6: Hit) {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_Glass(offset_8);
-            glass_rays(_e4, ray_21, hit_6);
+            glass_rays(_e4, ray_20, hit_6);
             return;
         }
         case 1u: {
             let _e5 = load_Mirror(offset_8);
-            mirror_rays(_e5, ray_21, hit_6);
+            mirror_rays(_e5, ray_20, hit_6);
             return;
         }
         default: {
@@ -1141,7 +1138,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_2: f32;
     var stack: array<Frame, 6>;
     var depth: u32;
-    var ray_22: Ray;
+    var ray_21: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1180,7 +1177,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 6>();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_21 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1196,10 +1193,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_22;
+            let _e67 = ray_21;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_22;
+            let _e70 = ray_21;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1331,7 +1328,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_11, _e283, dir_3);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_22 = Ray(_e284, 0f, dir_3, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_21 = Ray(_e284, 0f, dir_3, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 5u)].ray;
             s_ray = _e299;

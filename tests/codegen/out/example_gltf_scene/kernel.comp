@@ -478,7 +478,10 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+BoxRay box_ray(GpuNode header_1, Ray ray_2) {
+    vec3 origin_2 = header_1.min_;
+    vec3 _e3 = node_frame_hi(header_1);
+    vec3 extent = (_e3 - origin_2);
     float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_3) >> 23u) & 255u), 1u), 253u);
     vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
@@ -486,16 +489,10 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     vec3 floor_ = vec3(9.094947e-13);
     vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
     vec3 inv = (vec3(1.0) / mix(d_3, (s_3 * floor_), lessThan(abs(d_3), floor_)));
-    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 rel = (origin_2 - ray_2.origin);
     vec3 start = (rel * inv);
-    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
-    vec3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    return _e7;
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_3);
+    return BoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -544,19 +541,19 @@ vec3 normal_to_world(GpuInstance inst_1, vec3 n) {
     return _e19;
 }
 
-bool single_sided_seen_front(Ray ray_4, bool front_face) {
-    return (front_face != (ray_4.kind == RAY_SHADOW));
+bool single_sided_seen_front(Ray ray_3, bool front_face) {
+    return (front_face != (ray_3.kind == RAY_SHADOW));
 }
 
-bool culled(GpuInstance inst_2, Ray ray_5, Candidate c) {
+bool culled(GpuInstance inst_2, Ray ray_4, Candidate c) {
     Triangle _e4 = load_triangle(c.primitive);
     vec3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    bool _e17 = single_sided_seen_front(ray_5, (dot(ray_5.dir, _e12) < 0.0));
+    bool _e17 = single_sided_seen_front(ray_4, (dot(ray_4.dir, _e12) < 0.0));
     return !(_e17);
 }
 
-float point_error(vec3 origin_2, vec3 along) {
-    vec3 a_6 = (abs(origin_2) + abs(along));
+float point_error(vec3 origin_1, vec3 along) {
+    vec3 a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -595,14 +592,14 @@ vec3 decode_octahedral(uint bits) {
     return _e40;
 }
 
-Hit finish_hit(Ray ray_6, Candidate c_1) {
+Hit finish_hit(Ray ray_5, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_5.origin, (ray_5.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -643,7 +640,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_5.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -775,10 +772,10 @@ uint gltf_pcg(uint x_5) {
     return ((word_1 >> 22u) ^ word_1);
 }
 
-float gltf_coverage(Ray ray_7, Hit hit_1) {
+float gltf_coverage(Ray ray_6, Hit hit_1) {
     uint h = 0u;
-    uvec3 o_1 = floatBitsToUint(ray_7.origin);
-    uvec3 d_4 = floatBitsToUint(ray_7.dir);
+    uvec3 o_1 = floatBitsToUint(ray_6.origin);
+    uvec3 d_4 = floatBitsToUint(ray_6.dir);
     h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
     uint _e20 = h;
     h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -793,36 +790,36 @@ float gltf_coverage(Ray ray_7, Hit hit_1) {
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_8, Hit hit_2) {
-    if (((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW)))) {
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_7, Hit hit_2) {
+    if (((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW)))) {
         return false;
     }
     if ((blend != 0u)) {
-        float _e17 = gltf_coverage(ray_8, hit_2);
+        float _e17 = gltf_coverage(ray_7, hit_2);
         return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_9, Hit hit_3) {
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_8, Hit hit_3) {
     vec4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_10, Hit hit_4) {
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_9, Hit hit_4) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_5, Ray ray_11, Candidate c_3) {
+bool accept(GpuInstance inst_5, Ray ray_10, Candidate c_3) {
     bool short_circuit = false;
     bool _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
     short_circuit = _e7;
     if (_e7) {
-        bool _e9 = culled(inst_5, ray_11, c_3);
+        bool _e9 = culled(inst_5, ray_10, c_3);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -831,9 +828,9 @@ bool accept(GpuInstance inst_5, Ray ray_11, Candidate c_3) {
     }
     if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e19 = finish_hit(ray_11, c_3);
+        Hit _e19 = finish_hit(ray_10, c_3);
         hit_error = shaded;
-        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19);
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19);
         return _e23;
     }
     return true;
@@ -887,7 +884,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_12, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_11, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -895,10 +892,10 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_12);
+    TriangleRay _e7 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
-    BoxRay _e12 = header_box_ray(header_2, ray_12);
+    BoxRay _e12 = box_ray(header_2, ray_11);
     sp_1 = 0u;
     child = header_2.a;
     while(true) {
@@ -923,7 +920,7 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_6.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                vec3 _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                vec3 _e46 = hit_triangle(_e7, prim, ray_11.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
@@ -991,15 +988,15 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     return _e138;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_13, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_8 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_8, ray_13);
+    Ray _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_8.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -1053,17 +1050,17 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_14 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_13 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    vec3 _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    vec3 _e15 = ray_13.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_14.medium = _e17;
-    Ray _e18 = ray_14;
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
     return _e18;
 }
 
@@ -1071,7 +1068,7 @@ vec3 node_frame_bounds() {
     return vec3(65535.0);
 }
 
-Candidate intersect_scene(Ray ray_15, bool shadow_2) {
+Candidate intersect_scene(Ray ray_14, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -1079,7 +1076,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_15.tmax);
+    Candidate _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
@@ -1088,7 +1085,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2) {
     }
     uint base_3 = frame_3.tlas_root;
     GpuNode header_3 = _group_0_binding_2_cs[base_3];
-    BoxRay _e19 = header_box_ray(header_3, ray_15);
+    BoxRay _e19 = box_ray(header_3, ray_14);
     vec3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
@@ -1106,7 +1103,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2) {
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_14, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1178,8 +1175,8 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_7, Ray ray_16) {
-    vec3 _e3 = normalize_vec3f(ray_16.dir);
+vec3 sky_gradient(SkyGradient b_7, Ray ray_15) {
+    vec3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_7.horizon, b_7.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -1187,23 +1184,23 @@ vec3 sky_gradient(SkyGradient b_7, Ray ray_16) {
     return mix(b_7.horizon, b_7.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_17) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_16) {
     SkyGradient _e2 = load_SkyGradient(offset_5);
-    vec3 _e3 = sky_gradient(_e2, ray_17);
+    vec3 _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
-vec3 miss(Ray ray_18) {
+vec3 miss(Ray ray_17) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
-vec3 shading_normal(Ray ray_19, Hit hit_5) {
-    vec3 ng = faceforward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
+vec3 shading_normal(Ray ray_18, Hit hit_5) {
+    vec3 ng = faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1481,11 +1478,11 @@ float pbr_smith_v(float ndl, float ndv, float a2_1) {
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion_1, vec3 emissive, Ray ray_20, Hit hit_6) {
+vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion_1, vec3 emissive, Ray ray_19, Hit hit_6) {
     vec3 color = vec3(0.0);
     uint i_5 = 0u;
-    vec3 _e7 = shading_normal(ray_20, hit_6);
-    vec3 _e9 = normalize_vec3f(ray_20.dir);
+    vec3 _e7 = shading_normal(ray_19, hit_6);
+    vec3 _e9 = normalize_vec3f(ray_19.dir);
     vec3 v_4 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float _e12 = pbr_alpha2_(roughness_1);
@@ -1521,10 +1518,10 @@ vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion_
     return _e68;
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_21, Hit hit_7) {
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_20, Hit hit_7) {
     vec4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     vec3 c_12 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_21, hit_7);
+    vec3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7);
     return _e14;
 }
 
@@ -1542,23 +1539,23 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_22, Hit hit_8) {
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_21, Hit hit_8) {
     vec4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     vec3 c_13 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_22, hit_8);
+    vec3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8);
     return _e14;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_23, Hit hit_9, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_22, Hit hit_9, vec3 secondary) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_23, hit_9);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            vec3 _e7 = gltf_shade(_e6, ray_23, hit_9);
+            vec3 _e7 = gltf_shade(_e6, ray_22, hit_9);
             return _e7;
         }
         default: {
@@ -1568,33 +1565,33 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_23, Hit hit_9,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_24, Candidate c_6) {
+vec3 shade_direct(Ray ray_23, Candidate c_6) {
     GpuInstance inst_9 = _group_0_binding_3_cs[c_6.slot];
-    Hit _e6 = finish_hit(ray_24, c_6);
-    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_23, c_6);
+    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_25, float t_2, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_24, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_26, float t_3, vec3 radiance_1) {
+vec3 through_medium(Ray ray_25, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_26.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_26.medium - 1u)];
+    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_25.medium - 1u)];
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_27, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_26, Hit hit_10) {
     return;
 }
 
@@ -1621,7 +1618,7 @@ vec3 trace(Ray camera_ray) {
     float t_4 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_28 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_27 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1659,7 +1656,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_28 = camera_ray;
+    ray_27 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1675,10 +1672,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_28;
+            Ray _e67 = ray_27;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_28;
+            Ray _e70 = ray_27;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1812,7 +1809,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_15, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_28 = Ray(_e284, 0.0, dir_8, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_27 = Ray(_e284, 0.0, dir_8, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

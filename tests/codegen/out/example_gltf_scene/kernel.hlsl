@@ -524,16 +524,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_29 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_29;
+    const Ray ray_28 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_28;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_30 = _e4;
-    return ray_30;
+    const Ray ray_29 = _e4;
+    return ray_29;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -562,8 +562,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_31 = _e25;
-    return ray_31;
+    const Ray ray_30 = _e25;
+    return ray_30;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -616,8 +616,11 @@ BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float 
     return ret;
 }
 
-BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+BoxRay box_ray(GpuNode header_1, Ray ray_2)
 {
+    float3 origin_2 = header_1.min_;
+    const float3 _e3 = node_frame_hi(header_1);
+    float3 extent = (_e3 - origin_2);
     float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_3) >> 23u) & 255u), 1u), 253u);
     float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
@@ -625,19 +628,11 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     float3 floor_ = (9.094947e-13).xxx;
     float3 s_3 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
     float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_3 * floor_) : d_3));
-    float3 rel = (origin_1 - ray_2.origin);
+    float3 rel = (origin_2 - ray_2.origin);
     float3 start = (rel * inv);
-    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
-    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_3);
+    const BoxRay boxray = ConstructBoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
-{
-    const float3 _e4 = node_frame_hi(header_1);
-    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    const BoxRay boxray_1 = _e7;
-    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -698,22 +693,22 @@ float3 normal_to_world(GpuInstance inst_1, float3 n)
     return _e19;
 }
 
-bool single_sided_seen_front(Ray ray_4, bool front_face)
+bool single_sided_seen_front(Ray ray_3, bool front_face)
 {
-    return (front_face != (ray_4.kind == RAY_SHADOW));
+    return (front_face != (ray_3.kind == RAY_SHADOW));
 }
 
-bool culled(GpuInstance inst_2, Ray ray_5, Candidate c)
+bool culled(GpuInstance inst_2, Ray ray_4, Candidate c)
 {
     const Triangle _e4 = load_triangle(c.primitive);
     const float3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    const bool _e17 = single_sided_seen_front(ray_5, (dot(ray_5.dir, _e12) < 0.0));
+    const bool _e17 = single_sided_seen_front(ray_4, (dot(ray_4.dir, _e12) < 0.0));
     return !(_e17);
 }
 
-float point_error(float3 origin_2, float3 along)
+float point_error(float3 origin_1, float3 along)
 {
-    float3 a_6 = (abs(origin_2) + abs(along));
+    float3 a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -788,16 +783,16 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Hit finish_hit(Ray ray_6, Candidate c_1)
+Hit finish_hit(Ray ray_5, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_6.origin, (ray_6.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_5.origin, (ray_5.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_5.origin + (ray_5.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -841,7 +836,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_5.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_15 = _e151;
     return hit_15;
@@ -1006,12 +1001,12 @@ uint gltf_pcg(uint x_5)
     return ((word_1 >> 22u) ^ word_1);
 }
 
-float gltf_coverage(Ray ray_7, Hit hit_1)
+float gltf_coverage(Ray ray_6, Hit hit_1)
 {
     uint h = (uint)0;
 
-    uint3 o_1 = asuint(ray_7.origin);
-    uint3 d_4 = asuint(ray_7.dir);
+    uint3 o_1 = asuint(ray_6.origin);
+    uint3 d_4 = asuint(ray_6.dir);
     h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
     uint _e20 = h;
     h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -1026,41 +1021,41 @@ float gltf_coverage(Ray ray_7, Hit hit_1)
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_8, Hit hit_2)
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_7, Hit hit_2)
 {
-    if (((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW)))) {
+    if (((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW)))) {
         return false;
     }
     if ((blend != 0u)) {
-        const float _e17 = gltf_coverage(ray_8, hit_2);
+        const float _e17 = gltf_coverage(ray_7, hit_2);
         return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_9, Hit hit_3)
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_8, Hit hit_3)
 {
     const float4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3);
+    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_10, Hit hit_4)
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_9, Hit hit_4)
 {
     const GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    const bool _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4);
+    const bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_5, Ray ray_11, Candidate c_3)
+bool accept(GpuInstance inst_5, Ray ray_10, Candidate c_3)
 {
     bool short_circuit = (bool)0;
 
     bool _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
     short_circuit = _e7;
     if (_e7) {
-        const bool _e9 = culled(inst_5, ray_11, c_3);
+        const bool _e9 = culled(inst_5, ray_10, c_3);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -1069,9 +1064,9 @@ bool accept(GpuInstance inst_5, Ray ray_11, Candidate c_3)
     }
     if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        const Hit _e19 = finish_hit(ray_11, c_3);
+        const Hit _e19 = finish_hit(ray_10, c_3);
         hit_error = shaded;
-        const bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19);
+        const bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19);
         return _e23;
     }
     return true;
@@ -1139,7 +1134,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_12, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_11, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -1149,10 +1144,10 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_12);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    const BoxRay _e12 = header_box_ray(header_2, ray_12);
+    const BoxRay _e12 = box_ray(header_2, ray_11);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -1183,7 +1178,7 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_6.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                const float3 _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                const float3 _e46 = hit_triangle(_e7, prim, ray_11.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
@@ -1253,17 +1248,17 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     return candidate_2;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_13, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(slot_3*128+0)), asfloat(instances.Load4(slot_3*128+16)), asfloat(instances.Load4(slot_3*128+32)), asfloat(instances.Load4(slot_3*128+48)), asfloat(instances.Load4(slot_3*128+64)), asfloat(instances.Load4(slot_3*128+80)), asuint(instances.Load(slot_3*128+96)), asuint(instances.Load(slot_3*128+100)), asuint(instances.Load(slot_3*128+104)), asuint(instances.Load(slot_3*128+108)), asuint(instances.Load(slot_3*128+112)), asuint(instances.Load(slot_3*128+116)), asuint(instances.Load(slot_3*128+120)), asuint(instances.Load(slot_3*128+124)));
-    const Ray _e7 = to_object(inst_8, ray_13);
+    const Ray _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_8.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1325,20 +1320,20 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_14 = (Ray)0;
+    Ray ray_13 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    float3 _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    float3 _e15 = ray_13.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_14.medium = _e17;
-    Ray _e18 = ray_14;
-    const Ray ray_32 = _e18;
-    return ray_32;
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
+    const Ray ray_31 = _e18;
+    return ray_31;
 }
 
 float3 node_frame_bounds()
@@ -1346,7 +1341,7 @@ float3 node_frame_bounds()
     return (65535.0).xxx;
 }
 
-Candidate intersect_scene(Ray ray_15, bool shadow_2)
+Candidate intersect_scene(Ray ray_14, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1356,7 +1351,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_15.tmax);
+    const Candidate _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1366,7 +1361,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2)
     }
     uint base_3 = frame_3.tlas_root;
     GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
-    const BoxRay _e19 = header_box_ray(header_3, ray_15);
+    const BoxRay _e19 = box_ray(header_3, ray_14);
     const float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
@@ -1388,7 +1383,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2)
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_14, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1472,9 +1467,9 @@ SkyGradient load_SkyGradient(uint offset_4)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_7, Ray ray_16)
+float3 sky_gradient(SkyGradient b_7, Ray ray_15)
 {
-    const float3 _e3 = normalize_vec3f(ray_16.dir);
+    const float3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_7.horizon, b_7.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1482,26 +1477,26 @@ float3 sky_gradient(SkyGradient b_7, Ray ray_16)
     return lerp(b_7.horizon, b_7.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_17)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_16)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_5);
-    const float3 _e3 = sky_gradient(_e2, ray_17);
+    const float3 _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
-float3 miss(Ray ray_18)
+float3 miss(Ray ray_17)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
-float3 shading_normal(Ray ray_19, Hit hit_5)
+float3 shading_normal(Ray ray_18, Hit hit_5)
 {
-    float3 ng = faceforward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
+    float3 ng = faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1736,8 +1731,8 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd)));
     }
     float _e59 = tmax_4;
-    const Ray ray_33 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_33;
+    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_32;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -1848,13 +1843,13 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion_1, float3 emissive, Ray ray_20, Hit hit_6)
+float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion_1, float3 emissive, Ray ray_19, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_5 = (uint)0;
 
-    const float3 _e7 = shading_normal(ray_20, hit_6);
-    const float3 _e9 = normalize_vec3f(ray_20.dir);
+    const float3 _e7 = shading_normal(ray_19, hit_6);
+    const float3 _e9 = normalize_vec3f(ray_19.dir);
     float3 v_4 = -(_e9);
     float metal = saturate(metallic);
     const float _e12 = pbr_alpha2_(roughness_1);
@@ -1893,11 +1888,11 @@ float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlus
     return _e68;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_21, Hit hit_7)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_20, Hit hit_7)
 {
     const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     float3 c_12 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_21, hit_7);
+    const float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7);
     return _e14;
 }
 
@@ -1927,11 +1922,11 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_22, Hit hit_8)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_21, Hit hit_8)
 {
     const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     float3 c_13 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_22, hit_8);
+    const float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8);
     return _e14;
 }
 
@@ -1939,17 +1934,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_23, Hit hit_9, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_22, Hit hit_9, float3 secondary)
 {
     switch(type_id_4) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_23, hit_9);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            const float3 _e7 = gltf_shade(_e6, ray_23, hit_9);
+            const float3 _e7 = gltf_shade(_e6, ray_22, hit_9);
             return _e7;
         }
         default: {
@@ -1959,36 +1954,36 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_23, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_24, Candidate c_6)
+float3 shade_direct(Ray ray_23, Candidate c_6)
 {
     GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_6.slot*128+0)), asfloat(instances.Load4(c_6.slot*128+16)), asfloat(instances.Load4(c_6.slot*128+32)), asfloat(instances.Load4(c_6.slot*128+48)), asfloat(instances.Load4(c_6.slot*128+64)), asfloat(instances.Load4(c_6.slot*128+80)), asuint(instances.Load(c_6.slot*128+96)), asuint(instances.Load(c_6.slot*128+100)), asuint(instances.Load(c_6.slot*128+104)), asuint(instances.Load(c_6.slot*128+108)), asuint(instances.Load(c_6.slot*128+112)), asuint(instances.Load(c_6.slot*128+116)), asuint(instances.Load(c_6.slot*128+120)), asuint(instances.Load(c_6.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_24, c_6);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_23, c_6);
+    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_25, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_24, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_26, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_25, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_26.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_26.medium - 1u)*128+0)), asfloat(instances.Load4((ray_26.medium - 1u)*128+16)), asfloat(instances.Load4((ray_26.medium - 1u)*128+32)), asfloat(instances.Load4((ray_26.medium - 1u)*128+48)), asfloat(instances.Load4((ray_26.medium - 1u)*128+64)), asfloat(instances.Load4((ray_26.medium - 1u)*128+80)), asuint(instances.Load((ray_26.medium - 1u)*128+96)), asuint(instances.Load((ray_26.medium - 1u)*128+100)), asuint(instances.Load((ray_26.medium - 1u)*128+104)), asuint(instances.Load((ray_26.medium - 1u)*128+108)), asuint(instances.Load((ray_26.medium - 1u)*128+112)), asuint(instances.Load((ray_26.medium - 1u)*128+116)), asuint(instances.Load((ray_26.medium - 1u)*128+120)), asuint(instances.Load((ray_26.medium - 1u)*128+124)));
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_25.medium - 1u)*128+0)), asfloat(instances.Load4((ray_25.medium - 1u)*128+16)), asfloat(instances.Load4((ray_25.medium - 1u)*128+32)), asfloat(instances.Load4((ray_25.medium - 1u)*128+48)), asfloat(instances.Load4((ray_25.medium - 1u)*128+64)), asfloat(instances.Load4((ray_25.medium - 1u)*128+80)), asuint(instances.Load((ray_25.medium - 1u)*128+96)), asuint(instances.Load((ray_25.medium - 1u)*128+100)), asuint(instances.Load((ray_25.medium - 1u)*128+104)), asuint(instances.Load((ray_25.medium - 1u)*128+108)), asuint(instances.Load((ray_25.medium - 1u)*128+112)), asuint(instances.Load((ray_25.medium - 1u)*128+116)), asuint(instances.Load((ray_25.medium - 1u)*128+120)), asuint(instances.Load((ray_25.medium - 1u)*128+124)));
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_27, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_26, Hit hit_10)
 {
     return;
 }
@@ -2044,7 +2039,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_28 = (Ray)0;
+    Ray ray_27 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -2083,7 +2078,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_28 = camera_ray;
+    ray_27 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -2102,10 +2097,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_28;
+            Ray _e67 = ray_27;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_28;
+            Ray _e70 = ray_27;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -2242,7 +2237,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_16, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_28 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_27 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

@@ -585,11 +585,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -597,19 +598,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_3 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_3;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_3;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -675,30 +667,30 @@ metal::float3 normal_to_world(
 }
 
 bool single_sided_seen_front(
-    Ray ray_4,
+    Ray ray_3,
     bool front_face
 ) {
-    return front_face != (ray_4.kind == RAY_SHADOW);
+    return front_face != (ray_3.kind == RAY_SHADOW);
 }
 
 bool culled(
     GpuInstance inst_2,
-    Ray ray_5,
+    Ray ray_4,
     Candidate c,
     device type_12 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Triangle _e4 = load_triangle(c.primitive, triangles, _buffer_sizes);
     metal::float3 _e12 = normal_to_world(inst_2, metal::cross(_e4.v1_ - _e4.v0_, _e4.v2_ - _e4.v0_));
-    bool _e17 = single_sided_seen_front(ray_5, metal::dot(ray_5.dir, _e12) < 0.0);
+    bool _e17 = single_sided_seen_front(ray_4, metal::dot(ray_4.dir, _e12) < 0.0);
     return !(_e17);
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_6 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_6 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
@@ -749,7 +741,7 @@ metal::float3 decode_octahedral(
 }
 
 Hit finish_hit(
-    Ray ray_6,
+    Ray ray_5,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -761,9 +753,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_5.origin, ray_5.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_5.origin + (ray_5.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -804,7 +796,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_5.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -978,14 +970,14 @@ uint gltf_pcg(
 }
 
 float gltf_coverage(
-    Ray ray_7,
+    Ray ray_6,
     Hit hit_1,
     constant FrameUniforms& frame,
     thread type_4& scratch
 ) {
     uint h = {};
-    metal::uint3 o_1 = as_type<metal::uint3>(ray_7.origin);
-    metal::uint3 d_4 = as_type<metal::uint3>(ray_7.dir);
+    metal::uint3 o_1 = as_type<metal::uint3>(ray_6.origin);
+    metal::uint3 d_4 = as_type<metal::uint3>(ray_6.dir);
     h = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u);
     uint _e20 = h;
     h = ((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
@@ -1005,16 +997,16 @@ bool gltf_counts(
     float cutoff,
     uint blend,
     uint double_sided,
-    Ray ray_8,
+    Ray ray_7,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch
 ) {
-    if ((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW))) {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        float _e17 = gltf_coverage(ray_8, hit_2, frame, scratch);
+        float _e17 = gltf_coverage(ray_7, hit_2, frame, scratch);
         return _e17 < alpha;
     }
     return alpha >= cutoff;
@@ -1022,7 +1014,7 @@ bool gltf_counts(
 
 bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
-    Ray ray_9,
+    Ray ray_8,
     Hit hit_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1032,14 +1024,14 @@ bool gltf_masked_any_hit(
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
     float alpha_1 = m.base_color.w * _e7.w;
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3, frame, scratch);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3, frame, scratch);
     return _e13;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_10,
+    Ray ray_9,
     Hit hit_4,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1048,13 +1040,13 @@ bool dispatch_any_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4, frame, scratch, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4, frame, scratch, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_5,
-    Ray ray_11,
+    Ray ray_10,
     Candidate c_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1070,7 +1062,7 @@ bool accept(
     bool _e7 = (inst_5.flags & FLAG_CULL_BACK) != 0u;
     short_circuit = _e7;
     if (_e7) {
-        bool _e9 = culled(inst_5, ray_11, c_3, triangles, _buffer_sizes);
+        bool _e9 = culled(inst_5, ray_10, c_3, triangles, _buffer_sizes);
         short_circuit = _e9;
     }
     bool _e10 = short_circuit;
@@ -1079,9 +1071,9 @@ bool accept(
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e19 = finish_hit(ray_11, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e19 = finish_hit(ray_10, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19, frame, scratch, params, texels, _buffer_sizes);
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19, frame, scratch, params, texels, _buffer_sizes);
         return _e23;
     }
     return true;
@@ -1158,7 +1150,7 @@ Candidate intersect_mesh(
     GpuInstance inst_6,
     uint slot_2,
     Ray world_ray,
-    Ray ray_12,
+    Ray ray_11,
     Candidate best_in,
     bool shadow,
     constant FrameUniforms& frame,
@@ -1181,10 +1173,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_12);
+    TriangleRay _e7 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_2 = nodes[base_2];
-    BoxRay _e12 = header_box_ray(header_2, ray_12);
+    BoxRay _e12 = box_ray(header_2, ray_11);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -1215,7 +1207,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_6.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_11.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -1285,7 +1277,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_13,
+    Ray ray_12,
     Candidate best_1,
     bool shadow_1,
     constant FrameUniforms& frame,
@@ -1303,12 +1295,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_8 = instances[slot_3];
-    Ray _e7 = to_object(inst_8, ray_13);
+    Ray _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1397,17 +1389,17 @@ Ray sample_camera_ray(
     thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_14 = {};
+    Ray ray_13 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_13.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-    ray_14.medium = _e17;
-    Ray _e18 = ray_14;
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
     return _e18;
 }
 
@@ -1417,7 +1409,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_15,
+    Ray ray_14,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1440,7 +1432,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_15.tmax);
+    Candidate _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1449,7 +1441,7 @@ Candidate intersect_scene(
     }
     uint base_3 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_3];
-    BoxRay _e19 = header_box_ray(header_3, ray_15);
+    BoxRay _e19 = box_ray(header_3, ray_14);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1470,7 +1462,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_15, _e54, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_14, _e54, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1548,9 +1540,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_7,
-    Ray ray_16
+    Ray ray_15
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_16.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_7.horizon, b_7.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1561,17 +1553,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_17,
+    Ray ray_16,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_17);
+    metal::float3 _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_18,
+    Ray ray_17,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1580,15 +1572,15 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shading_normal(
-    Ray ray_19,
+    Ray ray_18,
     Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1992,7 +1984,7 @@ metal::float3 gltf_radiance(
     float roughness_1,
     float occlusion_1,
     metal::float3 emissive,
-    Ray ray_20,
+    Ray ray_19,
     Hit hit_6,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2012,8 +2004,8 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e7 = shading_normal(ray_20, hit_6);
-    metal::float3 _e9 = normalize_vec3f(ray_20.dir);
+    metal::float3 _e7 = shading_normal(ray_19, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_19.dir);
     metal::float3 v_4 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
@@ -2054,7 +2046,7 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_21,
+    Ray ray_20,
     Hit hit_7,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2074,7 +2066,7 @@ metal::float3 gltf_masked_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_12 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_21, hit_7, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
@@ -2098,7 +2090,7 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_22,
+    Ray ray_21,
     Hit hit_8,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2118,14 +2110,14 @@ metal::float3 gltf_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_13 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_22, hit_8, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_23,
+    Ray ray_22,
     Hit hit_9,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -2147,12 +2139,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_23, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_23, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_22, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -2163,7 +2155,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_24,
+    Ray ray_23,
     Candidate c_6,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2182,15 +2174,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
-    Hit _e6 = finish_hit(ray_24, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_23, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_25,
+    Ray ray_24,
     float t_2,
     metal::float3 radiance
 ) {
@@ -2198,7 +2190,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_26,
+    Ray ray_25,
     float t_3,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2207,21 +2199,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_26.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_10 = instances[ray_26.medium - 1u];
+    GpuInstance inst_10 = instances[ray_25.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_27,
+    Ray ray_26,
     Hit hit_10
 ) {
     return;
@@ -2279,7 +2271,7 @@ metal::float3 trace(
     float t_4 = {};
     type_21 stack = {};
     uint depth = {};
-    Ray ray_28 = {};
+    Ray ray_27 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2317,7 +2309,7 @@ metal::float3 trace(
     }
     stack = type_21 {};
     depth = 0u;
-    ray_28 = camera_ray;
+    ray_27 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2336,10 +2328,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_28;
+            Ray _e67 = ray_27;
             Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_28;
+            Ray _e70 = ray_27;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2476,7 +2468,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_15, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_28 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_27 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -488,7 +488,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_3) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -496,16 +499,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_3 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_3 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_3);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_3);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -554,19 +551,19 @@ fn normal_to_world(inst_1: GpuInstance, n: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn single_sided_seen_front(ray_4: Ray, front_face: bool) -> bool {
-    return (front_face != (ray_4.kind == RAY_SHADOW));
+fn single_sided_seen_front(ray_3: Ray, front_face: bool) -> bool {
+    return (front_face != (ray_3.kind == RAY_SHADOW));
 }
 
-fn culled(inst_2: GpuInstance, ray_5: Ray, c: Candidate) -> bool {
+fn culled(inst_2: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
     let _e4 = load_triangle(c.primitive);
     let _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    let _e17 = single_sided_seen_front(ray_5, (dot(ray_5.dir, _e12) < 0f));
+    let _e17 = single_sided_seen_front(ray_4, (dot(ray_4.dir, _e12) < 0f));
     return !(_e17);
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_6 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -606,15 +603,15 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_5.origin, (ray_5.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -655,7 +652,7 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_5.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -788,11 +785,11 @@ fn gltf_pcg(x_5: u32) -> u32 {
     return ((word_1 >> 22u) ^ word_1);
 }
 
-fn gltf_coverage(ray_7: Ray, hit_1: Hit) -> f32 {
+fn gltf_coverage(ray_6: Ray, hit_1: Hit) -> f32 {
     var h: u32;
 
-    let o_1 = bitcast<vec3<u32>>(ray_7.origin);
-    let d_4 = bitcast<vec3<u32>>(ray_7.dir);
+    let o_1 = bitcast<vec3<u32>>(ray_6.origin);
+    let d_4 = bitcast<vec3<u32>>(ray_6.dir);
     h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
     let _e20 = h;
     h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -807,37 +804,37 @@ fn gltf_coverage(ray_7: Ray, hit_1: Hit) -> f32 {
     return (f32((_e45 >> 8u)) * (1f / 16777216f));
 }
 
-fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_8: Ray, hit_2: Hit) -> bool {
-    if ((double_sided == 0u) && (hit_2.front_face == (ray_8.kind == RAY_SHADOW))) {
+fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_7: Ray, hit_2: Hit) -> bool {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_7.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        let _e17 = gltf_coverage(ray_8, hit_2);
+        let _e17 = gltf_coverage(ray_7, hit_2);
         return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_9: Ray, hit_3: Hit) -> bool {
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_8: Ray, hit_3: Hit) -> bool {
     let _e7 = sample_texture(m.base_texture, hit_3.uv);
     let alpha_1 = (m.base_color.w * _e7.w);
-    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_9, hit_3);
+    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_8, hit_3);
     return _e13;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_10: Ray, hit_4: Hit) -> bool {
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_9: Ray, hit_4: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_10, hit_4);
+    let _e4 = gltf_masked_any_hit(_e3, ray_9, hit_4);
     return _e4;
 }
 
-fn accept(inst_5: GpuInstance, ray_11: Ray, c_3: Candidate) -> bool {
+fn accept(inst_5: GpuInstance, ray_10: Ray, c_3: Candidate) -> bool {
     var short_circuit: bool;
 
     let _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
     short_circuit = _e7;
     if _e7 {
-        let _e9 = culled(inst_5, ray_11, c_3);
+        let _e9 = culled(inst_5, ray_10, c_3);
         short_circuit = _e9;
     }
     let _e10 = short_circuit;
@@ -846,9 +843,9 @@ fn accept(inst_5: GpuInstance, ray_11: Ray, c_3: Candidate) -> bool {
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e19 = finish_hit(ray_11, c_3);
+        let _e19 = finish_hit(ray_10, c_3);
         hit_error = shaded;
-        let _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_11, _e19);
+        let _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_10, _e19);
         return _e23;
     }
     return true;
@@ -902,7 +899,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_12: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_11: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -911,10 +908,10 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_12: Ray,
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_12);
+    let _e7 = prepare_triangle_ray(ray_11);
     let base_2 = inst_6.blas_root;
     let header_2 = nodes[base_2];
-    let _e12 = header_box_ray(header_2, ray_12);
+    let _e12 = box_ray(header_2, ray_11);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -933,7 +930,7 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_12: Ray,
                 let _e38 = k;
                 let prim = ((inst_6.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_12.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_11.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -1005,16 +1002,16 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_12: Ray,
     return _e138;
 }
 
-fn intersect_object(slot_3: u32, ray_13: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_12: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_8 = instances[slot_3];
-    let _e7 = to_object(inst_8, ray_13);
+    let _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_8, slot_3, ray_13, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -1067,18 +1064,18 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_14: Ray;
+    var ray_13: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    let _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    let _e15 = ray_13.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_14.medium = _e17;
-    let _e18 = ray_14;
+    ray_13.medium = _e17;
+    let _e18 = ray_13;
     return _e18;
 }
 
@@ -1086,7 +1083,7 @@ fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -1095,7 +1092,7 @@ fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_15.tmax);
+    let _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1104,7 +1101,7 @@ fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
     }
     let base_3 = frame_3.tlas_root;
     let header_3 = nodes[base_3];
-    let _e19 = header_box_ray(header_3, ray_15);
+    let _e19 = box_ray(header_3, ray_14);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -1122,7 +1119,7 @@ fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_14, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1194,8 +1191,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_7: SkyGradient, ray_16: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_16.dir);
+fn sky_gradient(b_7: SkyGradient, ray_15: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_15.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_7.horizon, b_7.ground, vec3(min((-(y) * 4f), 1f)));
@@ -1203,23 +1200,23 @@ fn sky_gradient(b_7: SkyGradient, ray_16: Ray) -> vec3<f32> {
     return mix(b_7.horizon, b_7.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_17: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_16: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_17);
+    let _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
-fn miss(ray_18: Ray) -> vec3<f32> {
+fn miss(ray_17: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
-fn shading_normal(ray_19: Ray, hit_5: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_5.geometric_normal, ray_19.dir, hit_5.geometric_normal);
+fn shading_normal(ray_18: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1499,12 +1496,12 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f32, emissive: vec3<f32>, ray_20: Ray, hit_6: Hit) -> vec3<f32> {
+fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f32, emissive: vec3<f32>, ray_19: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
-    let _e7 = shading_normal(ray_20, hit_6);
-    let _e9 = normalize_vec3f(ray_20.dir);
+    let _e7 = shading_normal(ray_19, hit_6);
+    let _e9 = normalize_vec3f(ray_19.dir);
     let v_4 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
@@ -1538,10 +1535,10 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion_1: f
     return _e68;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_21: Ray, hit_7: Hit) -> vec3<f32> {
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_20: Ray, hit_7: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     let c_12 = (m_1.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_21, hit_7);
+    let _e14 = gltf_radiance(c_12, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_20, hit_7);
     return _e14;
 }
 
@@ -1559,23 +1556,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_22: Ray, hit_8: Hit) -> vec3<f32> {
+fn gltf_shade(m_2: GltfMaterial, ray_21: Ray, hit_8: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     let c_13 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_22, hit_8);
+    let _e14 = gltf_radiance(c_13, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_21, hit_8);
     return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_23: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_22: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_23, hit_9);
+            let _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_23, hit_9);
+            let _e7 = gltf_shade(_e6, ray_22, hit_9);
             return _e7;
         }
         default: {
@@ -1584,33 +1581,33 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_23: Ray, hit_9: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_24: Ray, c_6: Candidate) -> vec3<f32> {
+fn shade_direct(ray_23: Ray, c_6: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_6.slot];
-    let _e6 = finish_hit(ray_24, c_6);
-    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_24, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_23, c_6);
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_25: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_24: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_26: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_25: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_26.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    let inst_10 = instances[(ray_26.medium - 1u)];
+    let inst_10 = instances[(ray_25.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_26, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_27: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_26: Ray, hit_10: Hit) {
     return;
 }
 
@@ -1638,7 +1635,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_28: Ray;
+    var ray_27: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1677,7 +1674,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_28 = camera_ray;
+    ray_27 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1693,10 +1690,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_28;
+            let _e67 = ray_27;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_28;
+            let _e70 = ray_27;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1828,7 +1825,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_15, _e283, dir_8);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_28 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_27 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

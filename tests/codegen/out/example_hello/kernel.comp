@@ -435,7 +435,10 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+BoxRay box_ray(GpuNode header_1, Ray ray_2) {
+    vec3 origin_2 = header_1.min_;
+    vec3 _e3 = node_frame_hi(header_1);
+    vec3 extent = (_e3 - origin_2);
     float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_3) >> 23u) & 255u), 1u), 253u);
     vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
@@ -443,16 +446,10 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     vec3 floor_ = vec3(9.094947e-13);
     vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
     vec3 inv = (vec3(1.0) / mix(d_3, (s_4 * floor_), lessThan(abs(d_3), floor_)));
-    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 rel = (origin_2 - ray_2.origin);
     vec3 start = (rel * inv);
-    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
-    vec3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    return _e7;
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -488,7 +485,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_9 ? vec3(t, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
     return true;
 }
 
@@ -540,7 +537,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -548,10 +545,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     while(true) {
@@ -576,7 +573,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                vec3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                vec3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
@@ -644,22 +641,22 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     return _e138;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_6, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_6, ray_6);
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
-float point_error(vec3 origin_2, vec3 along) {
-    vec3 a_5 = (abs(origin_2) + abs(along));
+float point_error(vec3 origin_1, vec3 along) {
+    vec3 a_5 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
@@ -711,14 +708,14 @@ vec3 normal_to_world(GpuInstance inst_5, vec3 n_2) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_7, Candidate c_1) {
+Hit finish_hit(Ray ray_6, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_7.origin, (ray_7.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_7.origin + (ray_7.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -759,7 +756,7 @@ Hit finish_hit(Ray ray_7, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_7.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -812,29 +809,29 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_8 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_7 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    vec3 _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    vec3 _e15 = ray_7.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_8.medium = _e17;
-    Ray _e18 = ray_8;
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
     return _e18;
 }
 
-PathState start_path(Ray ray_9) {
-    return PathState(ray_9, vec3(1.0), vec3(0.0), true);
+PathState start_path(Ray ray_8) {
+    return PathState(ray_8, vec3(1.0), vec3(0.0), true);
 }
 
 vec3 node_frame_bounds() {
     return vec3(65535.0);
 }
 
-Candidate intersect_scene(Ray ray_10, bool shadow_2) {
+Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -842,7 +839,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
@@ -851,7 +848,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = _group_0_binding_2_cs[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_10);
+    BoxRay _e19 = box_ray(header_3, ray_9);
     vec3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
@@ -869,7 +866,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -941,8 +938,8 @@ SkyGradient load_SkyGradient(uint offset_2) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_6, Ray ray_11) {
-    vec3 _e3 = normalize_vec3f(ray_11.dir);
+vec3 sky_gradient(SkyGradient b_6, Ray ray_10) {
+    vec3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_6.horizon, b_6.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -950,18 +947,18 @@ vec3 sky_gradient(SkyGradient b_6, Ray ray_11) {
     return mix(b_6.horizon, b_6.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_12) {
+vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_11) {
     SkyGradient _e2 = load_SkyGradient(offset_3);
-    vec3 _e3 = sky_gradient(_e2, ray_12);
+    vec3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
-vec3 miss(Ray ray_13) {
+vec3 miss(Ray ray_12) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -981,15 +978,15 @@ void rt_spawn(vec3 dir, vec3 weight) {
     }
 }
 
-void mirror_rays(Mirror m, Ray ray_14, Hit hit_1) {
-    vec3 _e4 = normalize_vec3f(ray_14.dir);
+void mirror_rays(Mirror m, Ray ray_13, Hit hit_1) {
+    vec3 _e4 = normalize_vec3f(ray_13.dir);
     rt_spawn(reflect(_e4, hit_1.normal), m.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_2, uint offset_5, Ray ray_15, Hit hit_2) {
+void dispatch_secondary_rays(uint type_id_2, uint offset_5, Ray ray_14, Hit hit_2) {
     Mirror _e3 = load_Mirror(offset_5);
-    mirror_rays(_e3, ray_15, hit_2);
+    mirror_rays(_e3, ray_14, hit_2);
     return;
 }
 
@@ -1000,8 +997,8 @@ Lambert load_Lambert(uint offset_6) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 shading_normal(Ray ray_16, Hit hit_3) {
-    vec3 ng = faceforward(hit_3.geometric_normal, ray_16.dir, hit_3.geometric_normal);
+vec3 shading_normal(Ray ray_15, Hit hit_3) {
+    vec3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
     return faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
@@ -1121,10 +1118,10 @@ LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
     return _e28;
 }
 
-vec3 lambert_shade(Lambert m_1, Ray ray_17, Hit hit_4) {
+vec3 lambert_shade(Lambert m_1, Ray ray_16, Hit hit_4) {
     vec3 color = vec3(0.0);
     uint i_3 = 0u;
-    vec3 _e3 = shading_normal(ray_17, hit_4);
+    vec3 _e3 = shading_normal(ray_16, hit_4);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1148,20 +1145,20 @@ vec3 lambert_shade(Lambert m_1, Ray ray_17, Hit hit_4) {
     return _e33;
 }
 
-vec3 mirror_shade(Mirror m_2, Ray ray_18, Hit hit_5, vec3 secondary) {
+vec3 mirror_shade(Mirror m_2, Ray ray_17, Hit hit_5, vec3 secondary) {
     return secondary;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_9, Ray ray_19, Hit hit_6, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_9, Ray ray_18, Hit hit_6, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             Lambert _e5 = load_Lambert(offset_9);
-            vec3 _e6 = lambert_shade(_e5, ray_19, hit_6);
+            vec3 _e6 = lambert_shade(_e5, ray_18, hit_6);
             return _e6;
         }
         case 1u: {
             Mirror _e7 = load_Mirror(offset_9);
-            vec3 _e8 = mirror_shade(_e7, ray_19, hit_6, secondary_1);
+            vec3 _e8 = mirror_shade(_e7, ray_18, hit_6, secondary_1);
             return _e8;
         }
         default: {
@@ -1195,25 +1192,25 @@ PathState path_step(PathState s_1, Candidate c_2) {
     vec3 dir_6 = vec3(0.0);
     vec3 weight_1 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_20 = s_1.ray;
+    Ray ray_19 = s_1.ray;
     out_ = s_1;
     out_.live = false;
     if ((c_2.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_20);
+        vec3 _e14 = miss(ray_19);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e22 = finish_hit(ray_20, c_2);
+    Hit _e22 = finish_hit(ray_19, c_2);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = vec3(0.0);
     weight_1 = vec3(0.0);
-    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_19.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_20, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_19, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1223,7 +1220,7 @@ PathState path_step(PathState s_1, Candidate c_2) {
             weight_1 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e22, vec3(0.0));
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1240,7 +1237,7 @@ PathState path_step(PathState s_1, Candidate c_2) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_20.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_19.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT))) {
         float survive = (q_3 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1256,7 +1253,7 @@ PathState path_step(PathState s_1, Candidate c_2) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_6;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_19.depth + 1u), RAY_SECONDARY, ray_19.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;

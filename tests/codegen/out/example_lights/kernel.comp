@@ -479,7 +479,10 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+BoxRay box_ray(GpuNode header_1, Ray ray_2) {
+    vec3 origin_2 = header_1.min_;
+    vec3 _e3 = node_frame_hi(header_1);
+    vec3 extent = (_e3 - origin_2);
     float m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_1) >> 23u) & 255u), 1u), 253u);
     vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
@@ -487,16 +490,10 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     vec3 floor_ = vec3(9.094947e-13);
     vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
     vec3 inv = (vec3(1.0) / mix(d_3, (s_4 * floor_), lessThan(abs(d_3), floor_)));
-    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 rel = (origin_2 - ray_2.origin);
     vec3 start = (rel * inv);
-    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
-    vec3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    return _e7;
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -532,7 +529,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_8 ? vec3(t_6, (v_3 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
     return true;
 }
 
@@ -584,7 +581,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -592,10 +589,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     while(true) {
@@ -620,7 +617,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                vec3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                vec3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
@@ -698,15 +695,15 @@ Box load_Box(uint offset_2) {
     return Box(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)));
 }
 
-Intersection box_intersect(Box b_6, Ray ray_6) {
+Intersection box_intersect(Box b_6, Ray ray_5) {
     float t = 0.0;
     uint axis = 0u;
     float sign_ = 0.0;
     vec3 n_1 = vec3(0.0);
-    bvec3 tiny = lessThan(abs(ray_6.dir), vec3(1e-30));
-    vec3 inv_1 = (vec3(1.0) / mix(ray_6.dir, vec3(1e-30), tiny));
-    vec3 t_lo = ((b_6.min_ - ray_6.origin) * inv_1);
-    vec3 t_hi = ((b_6.max_ - ray_6.origin) * inv_1);
+    bvec3 tiny = lessThan(abs(ray_5.dir), vec3(1e-30));
+    vec3 inv_1 = (vec3(1.0) / mix(ray_5.dir, vec3(1e-30), tiny));
+    vec3 t_lo = ((b_6.min_ - ray_5.origin) * inv_1);
+    vec3 t_hi = ((b_6.max_ - ray_5.origin) * inv_1);
     vec3 near_3 = min(t_lo, t_hi);
     vec3 far_3 = max(t_lo, t_hi);
     float entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -718,14 +715,14 @@ Intersection box_intersect(Box b_6, Ray ray_6) {
     t = entry;
     axis = ((entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u));
     sign_ = -1.0;
-    if (!((entry >= ray_6.tmin))) {
+    if (!((entry >= ray_5.tmin))) {
         t = exit_1;
         axis = ((exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u));
         sign_ = 1.0;
     }
     float _e71 = t;
     float _e74 = t;
-    if (!(((_e71 >= ray_6.tmin) && (_e74 <= ray_6.tmax)))) {
+    if (!(((_e71 >= ray_5.tmin) && (_e74 <= ray_5.tmax)))) {
         uint _e80 = F32_INF;
         return Intersection(uintBitsToFloat(_e80), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
@@ -733,9 +730,9 @@ Intersection box_intersect(Box b_6, Ray ray_6) {
     uint _e91 = axis;
     float _e95 = sign_;
     uint _e99 = axis;
-    n_1[min(_e91, 2u)] = (_e95 * ((ray_6.dir[min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0));
+    n_1[min(_e91, 2u)] = (_e95 * ((ray_5.dir[min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0));
     float _e109 = t;
-    vec3 rel_1 = (((ray_6.origin + (ray_6.dir * vec3(_e109))) - b_6.min_) / max((b_6.max_ - b_6.min_), vec3(1e-30)));
+    vec3 rel_1 = (((ray_5.origin + (ray_5.dir * vec3(_e109))) - b_6.min_) / max((b_6.max_ - b_6.min_), vec3(1e-30)));
     uint _e124 = axis;
     uint _e129 = axis;
     vec2 uv = ((_e129 == 0u) ? rel_1.zy : ((_e124 == 1u) ? rel_1.xz : rel_1.xy));
@@ -752,12 +749,12 @@ Sphere load_Sphere(uint offset_3) {
     return Sphere(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24));
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_7) {
+Intersection sphere_intersect(Sphere s, Ray ray_6) {
     float t_1 = 0.0;
-    vec3 f_2 = (ray_7.origin - s.center);
-    float a_5 = dot(ray_7.dir, ray_7.dir);
-    float b_9 = -(dot(f_2, ray_7.dir));
-    vec3 l_4 = (f_2 + (ray_7.dir * vec3((b_9 / a_5))));
+    vec3 f_2 = (ray_6.origin - s.center);
+    float a_5 = dot(ray_6.dir, ray_6.dir);
+    float b_9 = -(dot(f_2, ray_6.dir));
+    vec3 l_4 = (f_2 + (ray_6.dir * vec3((b_9 / a_5))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_4, l_4)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -769,33 +766,33 @@ Intersection sphere_intersect(Sphere s, Ray ray_7) {
     float t1_1 = (q_1 / a_5);
     t_1 = min(t0_1, t1_1);
     float _e52 = t_1;
-    if (!((_e52 >= ray_7.tmin))) {
+    if (!((_e52 >= ray_6.tmin))) {
         t_1 = max(t0_1, t1_1);
     }
     float _e57 = t_1;
     float _e60 = t_1;
-    if (!(((_e57 >= ray_7.tmin) && (_e60 <= ray_7.tmax)))) {
+    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float _e76 = t_1;
-    vec3 _e82 = normalize_vec3f(((ray_7.origin + (ray_7.dir * vec3(_e76))) - s.center));
+    vec3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * vec3(_e76))) - s.center));
     float u_1 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv_1 = vec2(u_1, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t_1;
     return Intersection(_e109, _e82, uv_1);
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_8) {
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_7) {
     switch(type_id_1) {
         case 0u: {
             Box _e3 = load_Box(offset_4);
-            Intersection _e4 = box_intersect(_e3, ray_8);
+            Intersection _e4 = box_intersect(_e3, ray_7);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4);
-            Intersection _e6 = sphere_intersect(_e5, ray_8);
+            Intersection _e6 = sphere_intersect(_e5, ray_7);
             return _e6;
         }
         default: {
@@ -805,15 +802,15 @@ Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_8) {
     return Intersection(0.0, vec3(0.0), vec2(0.0));
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_6, ray_9);
+    Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_9, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -823,7 +820,7 @@ Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
         Candidate c_7 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        bool _e40 = accept(inst_6, ray_9, c_7);
+        bool _e40 = accept(inst_6, ray_8, c_7);
         if (_e40) {
             return c_7;
         }
@@ -831,8 +828,8 @@ Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow
     return best_1;
 }
 
-float point_error(vec3 origin_2, vec3 along) {
-    vec3 a_6 = (abs(origin_2) + abs(along));
+float point_error(vec3 origin_1, vec3 along) {
+    vec3 a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -884,14 +881,14 @@ vec3 normal_to_world(GpuInstance inst_5, vec3 n_3) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_10, Candidate c_1) {
+Hit finish_hit(Ray ray_9, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_10.origin, (ray_10.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_9.origin, (ray_9.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_10.origin + (ray_10.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -932,7 +929,7 @@ Hit finish_hit(Ray ray_10, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_10.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -985,17 +982,17 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_11 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_10 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_11 = _e7;
-    ray_11.depth = 0u;
-    ray_11.kind = RAY_CAMERA;
-    vec3 _e15 = ray_11.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    vec3 _e15 = ray_10.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_11.medium = _e17;
-    Ray _e18 = ray_11;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
     return _e18;
 }
 
@@ -1003,7 +1000,7 @@ vec3 node_frame_bounds() {
     return vec3(65535.0);
 }
 
-Candidate intersect_scene(Ray ray_12, bool shadow_2) {
+Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -1011,7 +1008,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_12.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
@@ -1020,7 +1017,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = _group_0_binding_2_cs[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_12);
+    BoxRay _e19 = box_ray(header_3, ray_11);
     vec3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
@@ -1038,7 +1035,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_12, _e54, shadow_2);
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1104,22 +1101,22 @@ ConstantBackground load_ConstantBackground(uint offset_5) {
     return ConstantBackground(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 constant_background(ConstantBackground b_7, Ray ray_13) {
+vec3 constant_background(ConstantBackground b_7, Ray ray_12) {
     return b_7.color;
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_14) {
+vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_13) {
     ConstantBackground _e2 = load_ConstantBackground(offset_6);
-    vec3 _e3 = constant_background(_e2, ray_14);
+    vec3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
-vec3 miss(Ray ray_15) {
+vec3 miss(Ray ray_14) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_15);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
     return _e9;
 }
 
@@ -1130,8 +1127,8 @@ Lambert load_Lambert(uint offset_7) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 shading_normal(Ray ray_16, Hit hit_1) {
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
+vec3 shading_normal(Ray ray_15, Hit hit_1) {
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1484,10 +1481,10 @@ LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_9) {
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
-vec3 lambert_shade(Lambert m, Ray ray_17, Hit hit_2) {
+vec3 lambert_shade(Lambert m, Ray ray_16, Hit hit_2) {
     vec3 color = vec3(0.0);
     uint i_5 = 0u;
-    vec3 _e3 = shading_normal(ray_17, hit_2);
+    vec3 _e3 = shading_normal(ray_16, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_5 = 0u;
@@ -1511,39 +1508,39 @@ vec3 lambert_shade(Lambert m, Ray ray_17, Hit hit_2) {
     return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_18, Hit hit_3, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_17, Hit hit_3, vec3 secondary) {
     Lambert _e3 = load_Lambert(offset_13);
-    vec3 _e4 = lambert_shade(_e3, ray_18, hit_3);
+    vec3 _e4 = lambert_shade(_e3, ray_17, hit_3);
     return _e4;
 }
 
-vec3 shade_direct(Ray ray_19, Candidate c_2) {
+vec3 shade_direct(Ray ray_18, Candidate c_2) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_19, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_18, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_20, float t_2, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_19, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_21, float t_3, vec3 radiance_1) {
+vec3 through_medium(Ray ray_20, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_21.medium == 0u)) {
+    if ((ray_20.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_21.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_20.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_3, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_22, Hit hit_4) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_21, Hit hit_4) {
     return;
 }
 
@@ -1570,7 +1567,7 @@ vec3 trace(Ray camera_ray) {
     float t_4 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1608,7 +1605,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1624,10 +1621,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_22;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_22;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1761,7 +1758,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_9, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_23 = Ray(_e284, 0.0, dir_9, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_22 = Ray(_e284, 0.0, dir_9, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

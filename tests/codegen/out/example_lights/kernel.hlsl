@@ -538,16 +538,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_24;
+    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_23;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_25 = _e4;
-    return ray_25;
+    const Ray ray_24 = _e4;
+    return ray_24;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -576,8 +576,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_26 = _e25;
-    return ray_26;
+    const Ray ray_25 = _e25;
+    return ray_25;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -630,8 +630,11 @@ BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float 
     return ret;
 }
 
-BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+BoxRay box_ray(GpuNode header_1, Ray ray_2)
 {
+    float3 origin_2 = header_1.min_;
+    const float3 _e3 = node_frame_hi(header_1);
+    float3 extent = (_e3 - origin_2);
     float m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_1) >> 23u) & 255u), 1u), 253u);
     float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
@@ -639,19 +642,11 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     float3 floor_ = (9.094947e-13).xxx;
     float3 s_4 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
     float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_4 * floor_) : d_3));
-    float3 rel = (origin_1 - ray_2.origin);
+    float3 rel = (origin_2 - ray_2.origin);
     float3 start = (rel * inv);
-    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    const BoxRay boxray = ConstructBoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
-{
-    const float3 _e4 = node_frame_hi(header_1);
-    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    const BoxRay boxray_1 = _e7;
-    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -688,7 +683,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_8 ? float3(t_6, (v_3 * rcp_), (w * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
 {
     return true;
 }
@@ -755,7 +750,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -765,10 +760,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    const BoxRay _e12 = header_box_ray(header_2, ray_5);
+    const BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -799,7 +794,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                const float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
@@ -900,17 +895,17 @@ float2 ZeroValuefloat2() {
     return (float2)0;
 }
 
-Intersection box_intersect(Box b_6, Ray ray_6)
+Intersection box_intersect(Box b_6, Ray ray_5)
 {
     float t = (float)0;
     uint axis = (uint)0;
     float sign_ = (float)0;
     float3 n_1 = (float3)0;
 
-    bool3 tiny = (abs(ray_6.dir) < (1e-30).xxx);
-    float3 inv_1 = ((1.0).xxx / (tiny ? (1e-30).xxx : ray_6.dir));
-    float3 t_lo = ((b_6.min_ - ray_6.origin) * inv_1);
-    float3 t_hi = ((b_6.max_ - ray_6.origin) * inv_1);
+    bool3 tiny = (abs(ray_5.dir) < (1e-30).xxx);
+    float3 inv_1 = ((1.0).xxx / (tiny ? (1e-30).xxx : ray_5.dir));
+    float3 t_lo = ((b_6.min_ - ray_5.origin) * inv_1);
+    float3 t_hi = ((b_6.max_ - ray_5.origin) * inv_1);
     float3 near_3 = min(t_lo, t_hi);
     float3 far_3 = max(t_lo, t_hi);
     float entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -923,14 +918,14 @@ Intersection box_intersect(Box b_6, Ray ray_6)
     t = entry;
     axis = ((entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u));
     sign_ = -1.0;
-    if (!((entry >= ray_6.tmin))) {
+    if (!((entry >= ray_5.tmin))) {
         t = exit_1;
         axis = ((exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u));
         sign_ = 1.0;
     }
     float _e71 = t;
     float _e74 = t;
-    if (!(((_e71 >= ray_6.tmin) && (_e74 <= ray_6.tmax)))) {
+    if (!(((_e71 >= ray_5.tmin) && (_e74 <= ray_5.tmax)))) {
         uint _e80 = F32_INF;
         const Intersection intersection_1 = ConstructIntersection(asfloat(_e80), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_1;
@@ -939,9 +934,9 @@ Intersection box_intersect(Box b_6, Ray ray_6)
     uint _e91 = axis;
     float _e95 = sign_;
     uint _e99 = axis;
-    n_1[min(uint(min(_e91, 2u)), 2u)] = (_e95 * ((ray_6.dir[min(uint(min(_e99, 2u)), 2u)] >= 0.0) ? 1.0 : -1.0));
+    n_1[min(uint(min(_e91, 2u)), 2u)] = (_e95 * ((ray_5.dir[min(uint(min(_e99, 2u)), 2u)] >= 0.0) ? 1.0 : -1.0));
     float _e109 = t;
-    float3 rel_1 = (((ray_6.origin + (ray_6.dir * (_e109).xxx)) - b_6.min_) / max((b_6.max_ - b_6.min_), (1e-30).xxx));
+    float3 rel_1 = (((ray_5.origin + (ray_5.dir * (_e109).xxx)) - b_6.min_) / max((b_6.max_ - b_6.min_), (1e-30).xxx));
     uint _e124 = axis;
     uint _e129 = axis;
     float2 uv = ((_e129 == 0u) ? rel_1.zy : ((_e124 == 1u) ? rel_1.xz : rel_1.xy));
@@ -968,14 +963,14 @@ Sphere load_Sphere(uint offset_3)
     return sphere;
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_7)
+Intersection sphere_intersect(Sphere s, Ray ray_6)
 {
     float t_1 = (float)0;
 
-    float3 f_2 = (ray_7.origin - s.center_);
-    float a_5 = dot(ray_7.dir, ray_7.dir);
-    float b_9 = -(dot(f_2, ray_7.dir));
-    float3 l_4 = (f_2 + (ray_7.dir * ((b_9 / a_5)).xxx));
+    float3 f_2 = (ray_6.origin - s.center_);
+    float a_5 = dot(ray_6.dir, ray_6.dir);
+    float b_9 = -(dot(f_2, ray_6.dir));
+    float3 l_4 = (f_2 + (ray_6.dir * ((b_9 / a_5)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_4, l_4)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -988,18 +983,18 @@ Intersection sphere_intersect(Sphere s, Ray ray_7)
     float t1_1 = (q_1 / a_5);
     t_1 = min(t0_1, t1_1);
     float _e52 = t_1;
-    if (!((_e52 >= ray_7.tmin))) {
+    if (!((_e52 >= ray_6.tmin))) {
         t_1 = max(t0_1, t1_1);
     }
     float _e57 = t_1;
     float _e60 = t_1;
-    if (!(((_e57 >= ray_7.tmin) && (_e60 <= ray_7.tmax)))) {
+    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_4 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_4;
     }
     float _e76 = t_1;
-    const float3 _e82 = normalize_vec3f(((ray_7.origin + (ray_7.dir * (_e76).xxx)) - s.center_));
+    const float3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * (_e76).xxx)) - s.center_));
     float u_1 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv_1 = float2(u_1, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t_1;
@@ -1011,18 +1006,18 @@ Intersection ZeroValueIntersection() {
     return (Intersection)0;
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_8)
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_7)
 {
     switch(type_id_1) {
         case 0u: {
             const Box _e3 = load_Box(offset_4);
-            const Intersection _e4 = box_intersect(_e3, ray_8);
+            const Intersection _e4 = box_intersect(_e3, ray_7);
             const Intersection intersection_6 = _e4;
             return intersection_6;
         }
         case 1u: {
             const Sphere _e5 = load_Sphere(offset_4);
-            const Intersection _e6 = sphere_intersect(_e5, ray_8);
+            const Intersection _e6 = sphere_intersect(_e5, ray_7);
             const Intersection intersection_7 = _e6;
             return intersection_7;
         }
@@ -1053,17 +1048,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_9);
+    const Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_9, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1074,7 +1069,7 @@ Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
         Candidate c_7 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_9, c_7);
+        const bool _e40 = accept(inst_6, ray_8, c_7);
         if (_e40) {
             const Candidate candidate_4 = c_7;
             return candidate_4;
@@ -1084,9 +1079,9 @@ Candidate intersect_object(uint slot_2, Ray ray_9, Candidate best_1, bool shadow
     return candidate_5;
 }
 
-float point_error(float3 origin_2, float3 along)
+float point_error(float3 origin_1, float3 along)
 {
-    float3 a_6 = (abs(origin_2) + abs(along));
+    float3 a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -1166,16 +1161,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_10, Candidate c_1)
+Hit finish_hit(Ray ray_9, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_10.origin, (ray_10.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_9.origin, (ray_9.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_10.origin + (ray_10.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_9.origin + (ray_9.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -1219,7 +1214,7 @@ Hit finish_hit(Ray ray_10, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_10.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_9 = _e151;
     return hit_9;
@@ -1279,20 +1274,20 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_11 = (Ray)0;
+    Ray ray_10 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_11 = _e7;
-    ray_11.depth = 0u;
-    ray_11.kind = RAY_CAMERA;
-    float3 _e15 = ray_11.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    float3 _e15 = ray_10.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_11.medium = _e17;
-    Ray _e18 = ray_11;
-    const Ray ray_27 = _e18;
-    return ray_27;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
+    const Ray ray_26 = _e18;
+    return ray_26;
 }
 
 float3 node_frame_bounds()
@@ -1300,7 +1295,7 @@ float3 node_frame_bounds()
     return (65535.0).xxx;
 }
 
-Candidate intersect_scene(Ray ray_12, bool shadow_2)
+Candidate intersect_scene(Ray ray_11, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1310,7 +1305,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_12.tmax);
+    const Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1320,7 +1315,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    const BoxRay _e19 = header_box_ray(header_3, ray_12);
+    const BoxRay _e19 = box_ray(header_3, ray_11);
     const float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
@@ -1342,7 +1337,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_12, _e54, shadow_2);
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1418,25 +1413,25 @@ ConstantBackground load_ConstantBackground(uint offset_5)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_7, Ray ray_13)
+float3 constant_background(ConstantBackground b_7, Ray ray_12)
 {
     return b_7.color;
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_14)
+float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_13)
 {
     const ConstantBackground _e2 = load_ConstantBackground(offset_6);
-    const float3 _e3 = constant_background(_e2, ray_14);
+    const float3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
-float3 miss(Ray ray_15)
+float3 miss(Ray ray_14)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_15);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
     return _e9;
 }
 
@@ -1455,9 +1450,9 @@ Lambert load_Lambert(uint offset_7)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_16, Hit hit_1)
+float3 shading_normal(Ray ray_15, Hit hit_1)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1819,8 +1814,8 @@ Ray shadow_ray(float3 position_6, float3 normal_7, float3 dir_2, float dist_1)
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd)));
     }
     float _e59 = tmax_4;
-    const Ray ray_28 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_28;
+    const Ray ray_27 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_27;
 }
 
 float shadow_query(float3 position_7, float3 normal_8, float3 dir_3, float dist_2)
@@ -1911,12 +1906,12 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_9)
     return lightsample_15;
 }
 
-float3 lambert_shade(Lambert m, Ray ray_17, Hit hit_2)
+float3 lambert_shade(Lambert m, Ray ray_16, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_5 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_17, hit_2);
+    const float3 _e3 = shading_normal(ray_16, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_5 = 0u;
@@ -1943,18 +1938,18 @@ float3 lambert_shade(Lambert m, Ray ray_17, Hit hit_2)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_18, Hit hit_3, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_17, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_13);
-    const float3 _e4 = lambert_shade(_e3, ray_18, hit_3);
+    const float3 _e4 = lambert_shade(_e3, ray_17, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_19, Candidate c_2)
+float3 shade_direct(Ray ray_18, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_19, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_18, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, (0.0).xxx);
     return _e11;
 }
 
@@ -1962,28 +1957,28 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_20, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_19, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_21, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_20, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_21.medium == 0u)) {
+    if ((ray_20.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_21.medium - 1u)*128+0)), asfloat(instances.Load4((ray_21.medium - 1u)*128+16)), asfloat(instances.Load4((ray_21.medium - 1u)*128+32)), asfloat(instances.Load4((ray_21.medium - 1u)*128+48)), asfloat(instances.Load4((ray_21.medium - 1u)*128+64)), asfloat(instances.Load4((ray_21.medium - 1u)*128+80)), asuint(instances.Load((ray_21.medium - 1u)*128+96)), asuint(instances.Load((ray_21.medium - 1u)*128+100)), asuint(instances.Load((ray_21.medium - 1u)*128+104)), asuint(instances.Load((ray_21.medium - 1u)*128+108)), asuint(instances.Load((ray_21.medium - 1u)*128+112)), asuint(instances.Load((ray_21.medium - 1u)*128+116)), asuint(instances.Load((ray_21.medium - 1u)*128+120)), asuint(instances.Load((ray_21.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_20.medium - 1u)*128+0)), asfloat(instances.Load4((ray_20.medium - 1u)*128+16)), asfloat(instances.Load4((ray_20.medium - 1u)*128+32)), asfloat(instances.Load4((ray_20.medium - 1u)*128+48)), asfloat(instances.Load4((ray_20.medium - 1u)*128+64)), asfloat(instances.Load4((ray_20.medium - 1u)*128+80)), asuint(instances.Load((ray_20.medium - 1u)*128+96)), asuint(instances.Load((ray_20.medium - 1u)*128+100)), asuint(instances.Load((ray_20.medium - 1u)*128+104)), asuint(instances.Load((ray_20.medium - 1u)*128+108)), asuint(instances.Load((ray_20.medium - 1u)*128+112)), asuint(instances.Load((ray_20.medium - 1u)*128+116)), asuint(instances.Load((ray_20.medium - 1u)*128+120)), asuint(instances.Load((ray_20.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_22, Hit hit_4)
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_21, Hit hit_4)
 {
     return;
 }
@@ -2039,7 +2034,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_23 = (Ray)0;
+    Ray ray_22 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -2078,7 +2073,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -2097,10 +2092,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_22;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_22;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -2237,7 +2232,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_10, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_23 = ConstructRay(_e284, 0.0, dir_9, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_22 = ConstructRay(_e284, 0.0, dir_9, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

@@ -588,11 +588,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_1 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_1) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -600,19 +601,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_4 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_4;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -659,7 +651,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -736,7 +728,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -752,10 +744,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -786,7 +778,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -870,17 +862,17 @@ Box load_Box(
 
 Intersection box_intersect(
     Box b_6,
-    Ray ray_6,
+    Ray ray_5,
     thread uint& F32_INF
 ) {
     float t = {};
     uint axis = {};
     float sign = {};
     metal::float3 n_1 = {};
-    metal::bool3 tiny = metal::abs(ray_6.dir) < metal::float3(0.000000000000000000000000000001);
-    metal::float3 inv_1 = metal::float3(1.0) / metal::select(ray_6.dir, metal::float3(0.000000000000000000000000000001), tiny);
-    metal::float3 t_lo = (b_6.min - ray_6.origin) * inv_1;
-    metal::float3 t_hi = (b_6.max - ray_6.origin) * inv_1;
+    metal::bool3 tiny = metal::abs(ray_5.dir) < metal::float3(0.000000000000000000000000000001);
+    metal::float3 inv_1 = metal::float3(1.0) / metal::select(ray_5.dir, metal::float3(0.000000000000000000000000000001), tiny);
+    metal::float3 t_lo = (b_6.min - ray_5.origin) * inv_1;
+    metal::float3 t_hi = (b_6.max - ray_5.origin) * inv_1;
     metal::float3 near_3 = metal::min(t_lo, t_hi);
     metal::float3 far_3 = metal::max(t_lo, t_hi);
     float entry = metal::max(metal::max(near_3.x, near_3.y), near_3.z);
@@ -892,14 +884,14 @@ Intersection box_intersect(
     t = entry;
     axis = (entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u);
     sign = -1.0;
-    if (!((entry >= ray_6.tmin))) {
+    if (!((entry >= ray_5.tmin))) {
         t = exit_1;
         axis = (exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u);
         sign = 1.0;
     }
     float _e71 = t;
     float _e74 = t;
-    if (!(((_e71 >= ray_6.tmin) && (_e74 <= ray_6.tmax)))) {
+    if (!(((_e71 >= ray_5.tmin) && (_e74 <= ray_5.tmax)))) {
         uint _e80 = F32_INF;
         return Intersection {as_type<float>(_e80), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
@@ -907,9 +899,9 @@ Intersection box_intersect(
     uint _e91 = axis;
     float _e95 = sign;
     uint _e99 = axis;
-    n_1[metal::min(_e91, 2u)] = _e95 * ((ray_6.dir[metal::min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0);
+    n_1[metal::min(_e91, 2u)] = _e95 * ((ray_5.dir[metal::min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0);
     float _e109 = t;
-    metal::float3 rel_1 = ((ray_6.origin + (ray_6.dir * metal::float3(_e109))) - b_6.min) / metal::max(b_6.max - b_6.min, metal::float3(0.000000000000000000000000000001));
+    metal::float3 rel_1 = ((ray_5.origin + (ray_5.dir * metal::float3(_e109))) - b_6.min) / metal::max(b_6.max - b_6.min, metal::float3(0.000000000000000000000000000001));
     uint _e124 = axis;
     uint _e129 = axis;
     metal::float2 uv = (_e129 == 0u) ? rel_1.zy : ((_e124 == 1u) ? rel_1.xz : rel_1.xy);
@@ -932,14 +924,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_7,
+    Ray ray_6,
     thread uint& F32_INF
 ) {
     float t_1 = {};
-    metal::float3 f_2 = ray_7.origin - s.center;
-    float a_5 = metal::dot(ray_7.dir, ray_7.dir);
-    float b_9 = -(metal::dot(f_2, ray_7.dir));
-    metal::float3 l_4 = f_2 + (ray_7.dir * metal::float3(b_9 / a_5));
+    metal::float3 f_2 = ray_6.origin - s.center;
+    float a_5 = metal::dot(ray_6.dir, ray_6.dir);
+    float b_9 = -(metal::dot(f_2, ray_6.dir));
+    metal::float3 l_4 = f_2 + (ray_6.dir * metal::float3(b_9 / a_5));
     float r2_ = s.radius * s.radius;
     float disc = a_5 * (r2_ - metal::dot(l_4, l_4));
     if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
@@ -951,17 +943,17 @@ Intersection sphere_intersect(
     float t1_1 = q_1 / a_5;
     t_1 = metal::min(t0_1, t1_1);
     float _e52 = t_1;
-    if (!((_e52 >= ray_7.tmin))) {
+    if (!((_e52 >= ray_6.tmin))) {
         t_1 = metal::max(t0_1, t1_1);
     }
     float _e57 = t_1;
     float _e60 = t_1;
-    if (!(((_e57 >= ray_7.tmin) && (_e60 <= ray_7.tmax)))) {
+    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t_1;
-    metal::float3 _e82 = normalize_vec3f((ray_7.origin + (ray_7.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_6.origin + (ray_6.dir * metal::float3(_e76))) - s.center);
     float u_1 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv_1 = metal::float2(u_1, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t_1;
@@ -971,7 +963,7 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
-    Ray ray_8,
+    Ray ray_7,
     device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
@@ -979,12 +971,12 @@ Intersection dispatch_intersection(
     switch(type_id_1) {
         case 0u: {
             Box _e3 = load_Box(offset_4, params, _buffer_sizes);
-            Intersection _e4 = box_intersect(_e3, ray_8, F32_INF);
+            Intersection _e4 = box_intersect(_e3, ray_7, F32_INF);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
-            Intersection _e6 = sphere_intersect(_e5, ray_8, F32_INF);
+            Intersection _e6 = sphere_intersect(_e5, ray_7, F32_INF);
             return _e6;
         }
         default: {
@@ -996,7 +988,7 @@ Intersection dispatch_intersection(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_9,
+    Ray ray_8,
     Candidate best_1,
     bool shadow_1,
     device type_5 const& params,
@@ -1009,12 +1001,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_9);
+    Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_9, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -1024,7 +1016,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_7 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_9, c_7);
+        bool _e40 = accept(inst_6, ray_8, c_7);
         if (_e40) {
             return c_7;
         }
@@ -1033,10 +1025,10 @@ Candidate intersect_object(
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_6 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_6 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
@@ -1107,7 +1099,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_10,
+    Ray ray_9,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -1119,9 +1111,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_10.origin, ray_10.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_9.origin, ray_9.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_10.origin + (ray_10.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_9.origin + (ray_9.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1162,7 +1154,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_10.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_9.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1247,17 +1239,17 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_11 = {};
+    Ray ray_10 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_11 = _e7;
-    ray_11.depth = 0u;
-    ray_11.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_11.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_10.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_11.medium = _e17;
-    Ray _e18 = ray_11;
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
     return _e18;
 }
 
@@ -1267,7 +1259,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_12,
+    Ray ray_11,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1286,7 +1278,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_12.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1295,7 +1287,7 @@ Candidate intersect_scene(
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_12);
+    BoxRay _e19 = box_ray(header_3, ray_11);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1316,7 +1308,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_12, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_11, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1388,7 +1380,7 @@ ConstantBackground load_ConstantBackground(
 
 metal::float3 constant_background(
     ConstantBackground b_7,
-    Ray ray_13
+    Ray ray_12
 ) {
     return b_7.color;
 }
@@ -1396,17 +1388,17 @@ metal::float3 constant_background(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_14,
+    Ray ray_13,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = constant_background(_e2, ray_14);
+    metal::float3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_15,
+    Ray ray_14,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1415,7 +1407,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_15, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1431,10 +1423,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_16,
+    Ray ray_15,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1919,7 +1911,7 @@ LightSample sample_light_deferred(
 
 metal::float3 lambert_shade(
     Lambert m,
-    Ray ray_17,
+    Ray ray_16,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -1937,7 +1929,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e3 = shading_normal(ray_17, hit_2);
+    metal::float3 _e3 = shading_normal(ray_16, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_5 = 0u;
@@ -1967,7 +1959,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_13,
-    Ray ray_18,
+    Ray ray_17,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1985,12 +1977,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_13, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_18, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_17, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_19,
+    Ray ray_18,
     Candidate c_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2008,15 +2000,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_14,
-    Ray ray_20,
+    Ray ray_19,
     float t_2,
     metal::float3 radiance
 ) {
@@ -2024,7 +2016,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_21,
+    Ray ray_20,
     float t_3,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2033,21 +2025,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_21.medium == 0u) {
+    if (ray_20.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_21.medium - 1u];
+    GpuInstance inst_9 = instances[ray_20.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_22,
+    Ray ray_21,
     Hit hit_4
 ) {
     return;
@@ -2104,7 +2096,7 @@ metal::float3 trace(
     float t_4 = {};
     type_20 stack = {};
     uint depth = {};
-    Ray ray_23 = {};
+    Ray ray_22 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2142,7 +2134,7 @@ metal::float3 trace(
     }
     stack = type_20 {};
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_22 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2161,10 +2153,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_22;
             Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_22;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2301,7 +2293,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_23 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_22 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -493,7 +493,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_1 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_1) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -501,16 +504,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_4 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_4 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -546,7 +543,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_6, (v_3 * rcp), (w * rcp)), hit_8);
 }
 
-fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -598,7 +595,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -607,10 +604,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_5);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_2 = nodes[base_1];
-    let _e12 = header_box_ray(header_2, ray_5);
+    let _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -629,7 +626,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
                 let _e38 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -711,16 +708,16 @@ fn load_Box(offset_2: u32) -> Box {
     return Box(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)));
 }
 
-fn box_intersect(b_6: Box, ray_6: Ray) -> Intersection {
+fn box_intersect(b_6: Box, ray_5: Ray) -> Intersection {
     var t: f32;
     var axis: u32;
     var sign_: f32;
     var n_1: vec3<f32>;
 
-    let tiny = (abs(ray_6.dir) < vec3(0.000000000000000000000000000001f));
-    let inv_1 = (vec3(1f) / select(ray_6.dir, vec3(0.000000000000000000000000000001f), tiny));
-    let t_lo = ((b_6.min - ray_6.origin) * inv_1);
-    let t_hi = ((b_6.max - ray_6.origin) * inv_1);
+    let tiny = (abs(ray_5.dir) < vec3(0.000000000000000000000000000001f));
+    let inv_1 = (vec3(1f) / select(ray_5.dir, vec3(0.000000000000000000000000000001f), tiny));
+    let t_lo = ((b_6.min - ray_5.origin) * inv_1);
+    let t_hi = ((b_6.max - ray_5.origin) * inv_1);
     let near_3 = min(t_lo, t_hi);
     let far_3 = max(t_lo, t_hi);
     let entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -732,14 +729,14 @@ fn box_intersect(b_6: Box, ray_6: Ray) -> Intersection {
     t = entry;
     axis = select(select(2u, 1u, (entry == near_3.y)), 0u, (entry == near_3.x));
     sign_ = -1f;
-    if !((entry >= ray_6.tmin)) {
+    if !((entry >= ray_5.tmin)) {
         t = exit_1;
         axis = select(select(2u, 1u, (exit_1 == far_3.y)), 0u, (exit_1 == far_3.x));
         sign_ = 1f;
     }
     let _e71 = t;
     let _e74 = t;
-    if !(((_e71 >= ray_6.tmin) && (_e74 <= ray_6.tmax))) {
+    if !(((_e71 >= ray_5.tmin) && (_e74 <= ray_5.tmax))) {
         let _e80 = F32_INF;
         return Intersection(bitcast<f32>(_e80), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
@@ -747,9 +744,9 @@ fn box_intersect(b_6: Box, ray_6: Ray) -> Intersection {
     let _e91 = axis;
     let _e95 = sign_;
     let _e99 = axis;
-    n_1[min(_e91, 2u)] = (_e95 * select(-1f, 1f, (ray_6.dir[min(_e99, 2u)] >= 0f)));
+    n_1[min(_e91, 2u)] = (_e95 * select(-1f, 1f, (ray_5.dir[min(_e99, 2u)] >= 0f)));
     let _e109 = t;
-    let rel_1 = (((ray_6.origin + (ray_6.dir * vec3(_e109))) - b_6.min) / max((b_6.max - b_6.min), vec3(0.000000000000000000000000000001f)));
+    let rel_1 = (((ray_5.origin + (ray_5.dir * vec3(_e109))) - b_6.min) / max((b_6.max - b_6.min), vec3(0.000000000000000000000000000001f)));
     let _e124 = axis;
     let _e129 = axis;
     let uv = select(select(rel_1.xy, rel_1.xz, (_e124 == 1u)), rel_1.zy, (_e129 == 0u));
@@ -766,13 +763,13 @@ fn load_Sphere(offset_3: u32) -> Sphere {
     return Sphere(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24));
 }
 
-fn sphere_intersect(s: Sphere, ray_7: Ray) -> Intersection {
+fn sphere_intersect(s: Sphere, ray_6: Ray) -> Intersection {
     var t_1: f32;
 
-    let f_2 = (ray_7.origin - s.center);
-    let a_5 = dot(ray_7.dir, ray_7.dir);
-    let b_9 = -(dot(f_2, ray_7.dir));
-    let l_4 = (f_2 + (ray_7.dir * vec3((b_9 / a_5))));
+    let f_2 = (ray_6.origin - s.center);
+    let a_5 = dot(ray_6.dir, ray_6.dir);
+    let b_9 = -(dot(f_2, ray_6.dir));
+    let l_4 = (f_2 + (ray_6.dir * vec3((b_9 / a_5))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_5 * (r2_ - dot(l_4, l_4)));
     if (!((disc >= 0f)) || !((a_5 > 0f))) {
@@ -784,33 +781,33 @@ fn sphere_intersect(s: Sphere, ray_7: Ray) -> Intersection {
     let t1_1 = (q_1 / a_5);
     t_1 = min(t0_1, t1_1);
     let _e52 = t_1;
-    if !((_e52 >= ray_7.tmin)) {
+    if !((_e52 >= ray_6.tmin)) {
         t_1 = max(t0_1, t1_1);
     }
     let _e57 = t_1;
     let _e60 = t_1;
-    if !(((_e57 >= ray_7.tmin) && (_e60 <= ray_7.tmax))) {
+    if !(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax))) {
         let _e66 = F32_INF;
         return Intersection(bitcast<f32>(_e66), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let _e76 = t_1;
-    let _e82 = normalize_vec3f(((ray_7.origin + (ray_7.dir * vec3(_e76))) - s.center));
+    let _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * vec3(_e76))) - s.center));
     let u_1 = select((0.5f + (atan2(_e82.z, -(_e82.x)) / TAU)), 0.5f, ((_e82.x == 0f) && (_e82.z == 0f)));
     let uv_1 = vec2<f32>(u_1, (acos(min(max(_e82.y, -1f), 1f)) * INV_PI));
     let _e109 = t_1;
     return Intersection(_e109, _e82, uv_1);
 }
 
-fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_8: Ray) -> Intersection {
+fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_7: Ray) -> Intersection {
     switch type_id_1 {
         case 0u: {
             let _e3 = load_Box(offset_4);
-            let _e4 = box_intersect(_e3, ray_8);
+            let _e4 = box_intersect(_e3, ray_7);
             return _e4;
         }
         case 1u: {
             let _e5 = load_Sphere(offset_4);
-            let _e6 = sphere_intersect(_e5, ray_8);
+            let _e6 = sphere_intersect(_e5, ray_7);
             return _e6;
         }
         default: {
@@ -819,16 +816,16 @@ fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_8: Ray) -> Intersect
     return Intersection();
 }
 
-fn intersect_object(slot_2: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_9);
+    let _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_9, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     let _e18 = r_2;
@@ -838,7 +835,7 @@ fn intersect_object(slot_2: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) 
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
         let c_7 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_6, ray_9, c_7);
+        let _e40 = accept(inst_6, ray_8, c_7);
         if _e40 {
             return c_7;
         }
@@ -846,8 +843,8 @@ fn intersect_object(slot_2: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) 
     return best_1;
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_6 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -900,15 +897,15 @@ fn normal_to_world(inst_5: GpuInstance, n_3: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_10: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_9: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_10.origin, (ray_10.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_9.origin, (ray_9.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_10.origin + (ray_10.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -949,7 +946,7 @@ fn finish_hit(ray_10: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_10.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_9.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -1001,18 +998,18 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_11: Ray;
+    var ray_10: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_11 = _e7;
-    ray_11.depth = 0u;
-    ray_11.kind = RAY_CAMERA;
-    let _e15 = ray_11.origin;
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    let _e15 = ray_10.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_11.medium = _e17;
-    let _e18 = ray_11;
+    ray_10.medium = _e17;
+    let _e18 = ray_10;
     return _e18;
 }
 
@@ -1020,7 +1017,7 @@ fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -1029,7 +1026,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_12.tmax);
+    let _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1038,7 +1035,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
     }
     let base_2 = frame_3.tlas_root;
     let header_3 = nodes[base_2];
-    let _e19 = header_box_ray(header_3, ray_12);
+    let _e19 = box_ray(header_3, ray_11);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -1056,7 +1053,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_12, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1122,22 +1119,22 @@ fn load_ConstantBackground(offset_5: u32) -> ConstantBackground {
     return ConstantBackground(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn constant_background(b_7: ConstantBackground, ray_13: Ray) -> vec3<f32> {
+fn constant_background(b_7: ConstantBackground, ray_12: Ray) -> vec3<f32> {
     return b_7.color;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_14: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_13: Ray) -> vec3<f32> {
     let _e2 = load_ConstantBackground(offset_6);
-    let _e3 = constant_background(_e2, ray_14);
+    let _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
-fn miss(ray_15: Ray) -> vec3<f32> {
+fn miss(ray_14: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_15);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
     return _e9;
 }
 
@@ -1148,8 +1145,8 @@ fn load_Lambert(offset_7: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_16: Ray, hit_1: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
+fn shading_normal(ray_15: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     return faceForward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1505,11 +1502,11 @@ fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_9: vec3<f32>) -
     return LightSample();
 }
 
-fn lambert_shade(m: Lambert, ray_17: Ray, hit_2: Hit) -> vec3<f32> {
+fn lambert_shade(m: Lambert, ray_16: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
-    let _e3 = shading_normal(ray_17, hit_2);
+    let _e3 = shading_normal(ray_16, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_5 = 0u;
@@ -1531,39 +1528,39 @@ fn lambert_shade(m: Lambert, ray_17: Ray, hit_2: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_18: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_17: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_13);
-    let _e4 = lambert_shade(_e3, ray_18, hit_3);
+    let _e4 = lambert_shade(_e3, ray_17, hit_3);
     return _e4;
 }
 
-fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_18: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_19, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_18, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_14: u32, ray_20: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_14: u32, ray_19: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_21: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_20: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_21.medium == 0u) {
+    if (ray_20.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_21.medium - 1u)];
+    let inst_9 = instances[(ray_20.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_22: Ray, hit_4: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_21: Ray, hit_4: Hit) {
     return;
 }
 
@@ -1591,7 +1588,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_23: Ray;
+    var ray_22: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1630,7 +1627,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1646,10 +1643,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_23;
+            let _e67 = ray_22;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_23;
+            let _e70 = ray_22;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1781,7 +1778,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_9, _e283, dir_9);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_23 = Ray(_e284, 0f, dir_9, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_22 = Ray(_e284, 0f, dir_9, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -483,7 +483,10 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+BoxRay box_ray(GpuNode header_1, Ray ray_2) {
+    vec3 origin_2 = header_1.min_;
+    vec3 _e3 = node_frame_hi(header_1);
+    vec3 extent = (_e3 - origin_2);
     float m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_6) >> 23u) & 255u), 1u), 253u);
     vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
@@ -491,16 +494,10 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     vec3 floor_ = vec3(9.094947e-13);
     vec3 s_6 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
     vec3 inv = (vec3(1.0) / mix(d_3, (s_6 * floor_), lessThan(abs(d_3), floor_)));
-    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 rel = (origin_2 - ray_2.origin);
     vec3 start = (rel * inv);
-    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_6);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
-    vec3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    return _e7;
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_6);
+    return BoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -536,7 +533,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_13 ? vec3(t_4, (v_6 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
     return true;
 }
 
@@ -588,7 +585,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -596,10 +593,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_5 = inst_2.blas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_5];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     while(true) {
@@ -624,7 +621,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                vec3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                vec3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
@@ -700,12 +697,12 @@ Sphere load_Sphere(uint offset_2) {
     return Sphere(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24));
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_6) {
+Intersection sphere_intersect(Sphere s, Ray ray_5) {
     float t = 0.0;
-    vec3 f_1 = (ray_6.origin - s.center);
-    float a_5 = dot(ray_6.dir, ray_6.dir);
-    float b_8 = -(dot(f_1, ray_6.dir));
-    vec3 l_6 = (f_1 + (ray_6.dir * vec3((b_8 / a_5))));
+    vec3 f_1 = (ray_5.origin - s.center);
+    float a_5 = dot(ray_5.dir, ray_5.dir);
+    float b_8 = -(dot(f_1, ray_5.dir));
+    vec3 l_6 = (f_1 + (ray_5.dir * vec3((b_8 / a_5))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -717,38 +714,38 @@ Intersection sphere_intersect(Sphere s, Ray ray_6) {
     float t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     float _e52 = t;
-    if (!((_e52 >= ray_6.tmin))) {
+    if (!((_e52 >= ray_5.tmin))) {
         t = max(t0_1, t1_2);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
+    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float _e76 = t;
-    vec3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * vec3(_e76))) - s.center));
+    vec3 _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * vec3(_e76))) - s.center));
     float u_4 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv = vec2(u_4, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
     return Intersection(_e109, _e82, uv);
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_7) {
+Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_6) {
     Sphere _e2 = load_Sphere(offset_3);
-    Intersection _e3 = sphere_intersect(_e2, ray_7);
+    Intersection _e3 = sphere_intersect(_e2, ray_6);
     return _e3;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_6, ray_8);
+    Ray _e7 = to_object(inst_6, ray_7);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -758,7 +755,7 @@ Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
         Candidate c_10 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        bool _e40 = accept(inst_6, ray_8, c_10);
+        bool _e40 = accept(inst_6, ray_7, c_10);
         if (_e40) {
             return c_10;
         }
@@ -766,8 +763,8 @@ Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow
     return best_1;
 }
 
-float point_error(vec3 origin_2, vec3 along) {
-    vec3 a_6 = (abs(origin_2) + abs(along));
+float point_error(vec3 origin_1, vec3 along) {
+    vec3 a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -819,14 +816,14 @@ vec3 normal_to_world(GpuInstance inst_5, vec3 n_2) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_9, Candidate c_1) {
+Hit finish_hit(Ray ray_8, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_9.origin, (ray_9.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_8.origin, (ray_8.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_8.origin + (ray_8.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -867,7 +864,7 @@ Hit finish_hit(Ray ray_9, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_8.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -920,17 +917,17 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_10 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_9 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    vec3 _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    vec3 _e15 = ray_9.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
     return _e18;
 }
 
@@ -938,7 +935,7 @@ vec3 node_frame_bounds() {
     return vec3(65535.0);
 }
 
-Candidate intersect_scene(Ray ray_11, bool shadow_2) {
+Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -946,7 +943,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
@@ -955,7 +952,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     }
     uint base_6 = frame_3.tlas_root;
     GpuNode header_3 = _group_0_binding_2_cs[base_6];
-    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    BoxRay _e19 = box_ray(header_3, ray_10);
     vec3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
@@ -973,7 +970,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1039,22 +1036,22 @@ ConstantBackground load_ConstantBackground(uint offset_4) {
     return ConstantBackground(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 constant_background(ConstantBackground b_6, Ray ray_12) {
+vec3 constant_background(ConstantBackground b_6, Ray ray_11) {
     return b_6.color;
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5);
-    vec3 _e3 = constant_background(_e2, ray_13);
+    vec3 _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
-vec3 miss(Ray ray_14) {
+vec3 miss(Ray ray_13) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1376,11 +1373,11 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf) {
     return _e8;
 }
 
-vec3 path_diffuse_shade(PathDiffuse m, Ray ray_15, Hit hit_1, vec3 secondary) {
+vec3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, vec3 secondary) {
     vec3 direct = vec3(0.0);
     uint i_6 = 0u;
-    vec3 n_13 = faceforward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
+    vec3 n_13 = faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = vec3(0.0);
     uint _e16 = light_count_query();
     i_6 = 0u;
@@ -1415,31 +1412,31 @@ QuadLamp load_QuadLamp(uint offset_10) {
     return QuadLamp(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30));
 }
 
-bool after_nee_bounce(Ray ray_16) {
-    return (dot(ray_16.dir, ray_16.dir) > 2.0);
+bool after_nee_bounce(Ray ray_15) {
+    return (dot(ray_15.dir, ray_15.dir) > 2.0);
 }
 
-float bounce_pdf(Ray ray_17) {
-    float x_6 = (length(ray_17.dir) - MIS_BOUNCE_LENGTH);
+float bounce_pdf(Ray ray_16) {
+    float x_6 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
     if (!((x_6 > -0.25))) {
         return 0.0;
     }
     return (exp((max(x_6, 0.0) * 90.0)) - 1.0);
 }
 
-vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_18, Hit hit_2) {
+vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2) {
     if (!(hit_2.front_face)) {
         return vec3(0.0);
     }
     vec3 le = (m_1.color * vec3(m_1.intensity));
-    bool _e11 = after_nee_bounce(ray_18);
+    bool _e11 = after_nee_bounce(ray_17);
     if (!(_e11)) {
         return le;
     }
-    float _e13 = bounce_pdf(ray_18);
-    float len = length(ray_18.dir);
+    float _e13 = bounce_pdf(ray_17);
+    float len = length(ray_17.dir);
     float dist_5 = (hit_2.t * len);
-    float cos_l = (abs(dot(hit_2.geometric_normal, ray_18.dir)) / len);
+    float cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
     float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     float _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
@@ -1454,19 +1451,19 @@ SphereLamp load_SphereLamp(uint offset_11) {
     return SphereLamp(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30));
 }
 
-vec3 sphere_lamp_shade(SphereLamp m_2, Ray ray_19, Hit hit_3) {
+vec3 sphere_lamp_shade(SphereLamp m_2, Ray ray_18, Hit hit_3) {
     if (!(hit_3.front_face)) {
         return vec3(0.0);
     }
     float r2_3 = max((m_2.radius * m_2.radius), 1e-20);
     vec3 le_1 = (m_2.color * vec3(((m_2.intensity * INV_PI) / r2_3)));
-    bool _e19 = after_nee_bounce(ray_19);
+    bool _e19 = after_nee_bounce(ray_18);
     if (!(_e19)) {
         return le_1;
     }
-    float _e21 = bounce_pdf(ray_19);
+    float _e21 = bounce_pdf(ray_18);
     vec3 center = (hit_3.position - (hit_3.normal * vec3(m_2.radius)));
-    vec3 to_center_1 = (center - ray_19.origin);
+    vec3 to_center_1 = (center - ray_18.origin);
     float s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     float one_minus_cos_max_1 = (s2_1 / (1.0 + sqrt((1.0 - s2_1))));
     float pl_1 = (1.0 / max((TAU * one_minus_cos_max_1), 1e-30));
@@ -1487,14 +1484,14 @@ PathPbr load_PathPbr(uint offset_12) {
     return PathPbr(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30), vec3(uintBitsToFloat(_e36), uintBitsToFloat(_e42), uintBitsToFloat(_e48)), _e55);
 }
 
-vec3 path_pbr_ng(Ray ray_20, Hit hit_4) {
-    return faceforward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
+vec3 path_pbr_ng(Ray ray_19, Hit hit_4) {
+    return faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
-vec3 path_pbr_n(Ray ray_21, Hit hit_5) {
-    vec3 _e2 = path_pbr_ng(ray_21, hit_5);
+vec3 path_pbr_n(Ray ray_20, Hit hit_5) {
+    vec3 _e2 = path_pbr_ng(ray_20, hit_5);
     vec3 n_14 = faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return ((dot(n_14, ray_21.dir) < 0.0) ? n_14 : _e2);
+    return ((dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2);
 }
 
 float pbr_alpha2_(float roughness) {
@@ -1573,15 +1570,15 @@ float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
-vec3 path_pbr_shade(PathPbr m_3, Ray ray_22, Hit hit_6, vec3 secondary_1) {
+vec3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, vec3 secondary_1) {
     vec3 direct_1 = vec3(0.0);
     uint i_7 = 0u;
     float w = 0.0;
-    vec3 _e4 = path_pbr_n(ray_22, hit_6);
-    vec3 _e6 = normalize_vec3f(ray_22.dir);
+    vec3 _e4 = path_pbr_n(ray_21, hit_6);
+    vec3 _e6 = normalize_vec3f(ray_21.dir);
     vec3 v_7 = -(_e6);
     direct_1 = vec3(0.0);
-    vec3 _e11 = path_pbr_ng(ray_22, hit_6);
+    vec3 _e11 = path_pbr_ng(ray_21, hit_6);
     uint _e13 = light_count_query();
     i_7 = 0u;
     bool loop_init_3 = true;
@@ -1614,26 +1611,26 @@ vec3 path_pbr_shade(PathPbr m_3, Ray ray_22, Hit hit_6, vec3 secondary_1) {
     return ((m_3.emissive + _e53) + secondary_1);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_23, Hit hit_7, vec3 secondary_2) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7, vec3 secondary_2) {
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13);
-            vec3 _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2);
+            vec3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             QuadLamp _e7 = load_QuadLamp(offset_13);
-            vec3 _e8 = quad_lamp_shade(_e7, ray_23, hit_7);
+            vec3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
             return _e8;
         }
         case 2u: {
             SphereLamp _e9 = load_SphereLamp(offset_13);
-            vec3 _e10 = sphere_lamp_shade(_e9, ray_23, hit_7);
+            vec3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
             return _e10;
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13);
-            vec3 _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2);
+            vec3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -1643,34 +1640,34 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_23, Hit hit_7,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_24, Candidate c_4) {
+vec3 shade_direct(Ray ray_23, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_24, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_23, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_25, float t_1, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_24, float t_1, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_26, float t_2, vec3 radiance_1) {
+vec3 through_medium(Ray ray_25, float t_2, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_26.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_26.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_25.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
-PathState start_path(Ray ray_27) {
-    return PathState(ray_27, vec3(1.0), vec3(0.0), true);
+PathState start_path(Ray ray_26) {
+    return PathState(ray_26, vec3(1.0), vec3(0.0), true);
 }
 
 vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
@@ -1695,14 +1692,14 @@ void rt_spawn(vec3 dir_5, vec3 weight) {
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_28, Hit hit_8) {
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8) {
     vec3 weight_1 = vec3(0.0);
     vec3 ng_1 = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
     vec3 n_15 = faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_28.depth >= m_4.roulette_depth)) {
+    if ((ray_27.depth >= m_4.roulette_depth)) {
         float q_4 = clamp(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)), 0.0, 1.0);
         float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -1770,11 +1767,11 @@ PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9,
     return PbrSample(_e46, weight_5, _e33);
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9) {
+void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9) {
     vec3 weight_2 = vec3(0.0);
-    vec3 _e3 = path_pbr_ng(ray_29, hit_9);
-    vec3 _e4 = path_pbr_n(ray_29, hit_9);
-    vec3 _e6 = normalize_vec3f(ray_29.dir);
+    vec3 _e3 = path_pbr_ng(ray_28, hit_9);
+    vec3 _e4 = path_pbr_n(ray_28, hit_9);
+    vec3 _e6 = normalize_vec3f(ray_28.dir);
     vec3 v_8 = -(_e6);
     float _e11 = rand_next();
     vec2 _e12 = rand2_next();
@@ -1783,7 +1780,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9) {
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_29.depth >= m_5.roulette_depth)) {
+    if ((ray_28.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -1801,16 +1798,16 @@ void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9) {
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_30, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_29, Hit hit_10) {
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_30, hit_10);
+            path_diffuse_rays(_e4, ray_29, hit_10);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_30, hit_10);
+            path_pbr_rays(_e5, ray_29, hit_10);
             return;
         }
         default: {
@@ -1844,25 +1841,25 @@ PathState path_step(PathState s_2, Candidate c_5) {
     vec3 dir_8 = vec3(0.0);
     vec3 weight_3 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_31 = s_2.ray;
+    Ray ray_30 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_31);
+        vec3 _e14 = miss(ray_30);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
     GpuInstance inst_10 = _group_0_binding_3_cs[c_5.slot];
-    Hit _e22 = finish_hit(ray_31, c_5);
+    Hit _e22 = finish_hit(ray_30, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = vec3(0.0);
     weight_3 = vec3(0.0);
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_31.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_30.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_31, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1872,7 +1869,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
             weight_3 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_31, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, vec3(0.0));
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1889,7 +1886,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_31.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_30.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1905,7 +1902,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_31.depth + 1u), RAY_SECONDARY, ray_31.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_30.depth + 1u), RAY_SECONDARY, ray_30.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;

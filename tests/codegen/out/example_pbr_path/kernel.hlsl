@@ -543,16 +543,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_31 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_31;
+    const Ray ray_30 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_30;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_32 = _e4;
-    return ray_32;
+    const Ray ray_31 = _e4;
+    return ray_31;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -581,8 +581,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_33 = _e25;
-    return ray_33;
+    const Ray ray_32 = _e25;
+    return ray_32;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -635,8 +635,11 @@ BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float 
     return ret;
 }
 
-BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+BoxRay box_ray(GpuNode header_1, Ray ray_2)
 {
+    float3 origin_2 = header_1.min_;
+    const float3 _e3 = node_frame_hi(header_1);
+    float3 extent = (_e3 - origin_2);
     float m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_6) >> 23u) & 255u), 1u), 253u);
     float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
@@ -644,19 +647,11 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     float3 floor_ = (9.094947e-13).xxx;
     float3 s_6 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
     float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_6 * floor_) : d_3));
-    float3 rel = (origin_1 - ray_2.origin);
+    float3 rel = (origin_2 - ray_2.origin);
     float3 start = (rel * inv);
-    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_6);
-    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_6);
+    const BoxRay boxray = ConstructBoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
-{
-    const float3 _e4 = node_frame_hi(header_1);
-    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    const BoxRay boxray_1 = _e7;
-    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -693,7 +688,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_13 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
 {
     return true;
 }
@@ -760,7 +755,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -770,10 +765,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_5 = inst_2.blas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_5*32+0)), asuint(nodes.Load(base_5*32+12)), asfloat(nodes.Load3(base_5*32+16)), asuint(nodes.Load(base_5*32+28)));
-    const BoxRay _e12 = header_box_ray(header_2, ray_5);
+    const BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -804,7 +799,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                const float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
@@ -903,14 +898,14 @@ float2 ZeroValuefloat2() {
     return (float2)0;
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_6)
+Intersection sphere_intersect(Sphere s, Ray ray_5)
 {
     float t = (float)0;
 
-    float3 f_1 = (ray_6.origin - s.center_);
-    float a_5 = dot(ray_6.dir, ray_6.dir);
-    float b_8 = -(dot(f_1, ray_6.dir));
-    float3 l_6 = (f_1 + (ray_6.dir * ((b_8 / a_5)).xxx));
+    float3 f_1 = (ray_5.origin - s.center_);
+    float a_5 = dot(ray_5.dir, ray_5.dir);
+    float b_8 = -(dot(f_1, ray_5.dir));
+    float3 l_6 = (f_1 + (ray_5.dir * ((b_8 / a_5)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -923,18 +918,18 @@ Intersection sphere_intersect(Sphere s, Ray ray_6)
     float t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     float _e52 = t;
-    if (!((_e52 >= ray_6.tmin))) {
+    if (!((_e52 >= ray_5.tmin))) {
         t = max(t0_1, t1_2);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
+    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_1 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_1;
     }
     float _e76 = t;
-    const float3 _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * (_e76).xxx)) - s.center_));
+    const float3 _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * (_e76).xxx)) - s.center_));
     float u_4 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv = float2(u_4, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
@@ -942,10 +937,10 @@ Intersection sphere_intersect(Sphere s, Ray ray_6)
     return intersection_2;
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_7)
+Intersection dispatch_intersection(uint type_id_1, uint offset_3, Ray ray_6)
 {
     const Sphere _e2 = load_Sphere(offset_3);
-    const Intersection _e3 = sphere_intersect(_e2, ray_7);
+    const Intersection _e3 = sphere_intersect(_e2, ray_6);
     const Intersection intersection_3 = _e3;
     return intersection_3;
 }
@@ -969,17 +964,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_8);
+    const Ray _e7 = to_object(inst_6, ray_7);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -990,7 +985,7 @@ Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
         Candidate c_10 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_8, c_10);
+        const bool _e40 = accept(inst_6, ray_7, c_10);
         if (_e40) {
             const Candidate candidate_4 = c_10;
             return candidate_4;
@@ -1000,9 +995,9 @@ Candidate intersect_object(uint slot_2, Ray ray_8, Candidate best_1, bool shadow
     return candidate_5;
 }
 
-float point_error(float3 origin_2, float3 along)
+float point_error(float3 origin_1, float3 along)
 {
-    float3 a_6 = (abs(origin_2) + abs(along));
+    float3 a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -1082,16 +1077,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_9, Candidate c_1)
+Hit finish_hit(Ray ray_8, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_9.origin, (ray_9.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_8.origin, (ray_8.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_9.origin + (ray_9.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_8.origin + (ray_8.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -1135,7 +1130,7 @@ Hit finish_hit(Ray ray_9, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_9.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_8.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_14 = _e151;
     return hit_14;
@@ -1195,20 +1190,20 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_10 = (Ray)0;
+    Ray ray_9 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    float3 _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    float3 _e15 = ray_9.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
-    const Ray ray_34 = _e18;
-    return ray_34;
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    const Ray ray_33 = _e18;
+    return ray_33;
 }
 
 float3 node_frame_bounds()
@@ -1216,7 +1211,7 @@ float3 node_frame_bounds()
     return (65535.0).xxx;
 }
 
-Candidate intersect_scene(Ray ray_11, bool shadow_2)
+Candidate intersect_scene(Ray ray_10, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1226,7 +1221,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_11.tmax);
+    const Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1236,7 +1231,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
     }
     uint base_6 = frame_3.tlas_root;
     GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(base_6*32+0)), asuint(nodes.Load(base_6*32+12)), asfloat(nodes.Load3(base_6*32+16)), asuint(nodes.Load(base_6*32+28)));
-    const BoxRay _e19 = header_box_ray(header_3, ray_11);
+    const BoxRay _e19 = box_ray(header_3, ray_10);
     const float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
@@ -1258,7 +1253,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1334,25 +1329,25 @@ ConstantBackground load_ConstantBackground(uint offset_4)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_6, Ray ray_12)
+float3 constant_background(ConstantBackground b_6, Ray ray_11)
 {
     return b_6.color;
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12)
 {
     const ConstantBackground _e2 = load_ConstantBackground(offset_5);
-    const float3 _e3 = constant_background(_e2, ray_13);
+    const float3 _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
-float3 miss(Ray ray_14)
+float3 miss(Ray ray_13)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1632,8 +1627,8 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd)));
     }
     float _e59 = tmax_4;
-    const Ray ray_35 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_35;
+    const Ray ray_34 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_34;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -1756,13 +1751,13 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf)
     return _e8;
 }
 
-float3 path_diffuse_shade(PathDiffuse m, Ray ray_15, Hit hit_1, float3 secondary)
+float3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, float3 secondary)
 {
     float3 direct = (float3)0;
     uint i_6 = (uint)0;
 
-    float3 n_13 = faceforward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
-    float3 ng = faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
+    float3 n_13 = faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = (0.0).xxx;
     const uint _e16 = light_count_query();
     i_6 = 0u;
@@ -1810,34 +1805,34 @@ QuadLamp load_QuadLamp(uint offset_10)
     return quadlamp;
 }
 
-bool after_nee_bounce(Ray ray_16)
+bool after_nee_bounce(Ray ray_15)
 {
-    return (dot(ray_16.dir, ray_16.dir) > 2.0);
+    return (dot(ray_15.dir, ray_15.dir) > 2.0);
 }
 
-float bounce_pdf(Ray ray_17)
+float bounce_pdf(Ray ray_16)
 {
-    float x_6 = (length(ray_17.dir) - MIS_BOUNCE_LENGTH);
+    float x_6 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
     if (!((x_6 > -0.25))) {
         return 0.0;
     }
     return (exp((max(x_6, 0.0) * 90.0)) - 1.0);
 }
 
-float3 quad_lamp_shade(QuadLamp m_1, Ray ray_18, Hit hit_2)
+float3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2)
 {
     if (!(hit_2.front_face)) {
         return (0.0).xxx;
     }
     float3 le = (m_1.color * (m_1.intensity).xxx);
-    const bool _e11 = after_nee_bounce(ray_18);
+    const bool _e11 = after_nee_bounce(ray_17);
     if (!(_e11)) {
         return le;
     }
-    const float _e13 = bounce_pdf(ray_18);
-    float len = length(ray_18.dir);
+    const float _e13 = bounce_pdf(ray_17);
+    float len = length(ray_17.dir);
     float dist_5 = (hit_2.t * len);
-    float cos_l = (abs(dot(hit_2.geometric_normal, ray_18.dir)) / len);
+    float cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
     float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     const float _e29 = mis_weight(_e13, pl);
     return (le * (_e29).xxx);
@@ -1862,20 +1857,20 @@ SphereLamp load_SphereLamp(uint offset_11)
     return spherelamp;
 }
 
-float3 sphere_lamp_shade(SphereLamp m_2, Ray ray_19, Hit hit_3)
+float3 sphere_lamp_shade(SphereLamp m_2, Ray ray_18, Hit hit_3)
 {
     if (!(hit_3.front_face)) {
         return (0.0).xxx;
     }
     float r2_3 = max((m_2.radius * m_2.radius), 1e-20);
     float3 le_1 = (m_2.color * (((m_2.intensity * INV_PI) / r2_3)).xxx);
-    const bool _e19 = after_nee_bounce(ray_19);
+    const bool _e19 = after_nee_bounce(ray_18);
     if (!(_e19)) {
         return le_1;
     }
-    const float _e21 = bounce_pdf(ray_19);
+    const float _e21 = bounce_pdf(ray_18);
     float3 center_ = (hit_3.position - (hit_3.normal * (m_2.radius).xxx));
-    float3 to_center_1 = (center_ - ray_19.origin);
+    float3 to_center_1 = (center_ - ray_18.origin);
     float s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     float one_minus_cos_max_1 = (s2_1 / (1.0 + sqrt((1.0 - s2_1))));
     float pl_1 = (1.0 / max((TAU * one_minus_cos_max_1), 1e-30));
@@ -1908,16 +1903,16 @@ PathPbr load_PathPbr(uint offset_12)
     return pathpbr;
 }
 
-float3 path_pbr_ng(Ray ray_20, Hit hit_4)
+float3 path_pbr_ng(Ray ray_19, Hit hit_4)
 {
-    return faceforward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
-float3 path_pbr_n(Ray ray_21, Hit hit_5)
+float3 path_pbr_n(Ray ray_20, Hit hit_5)
 {
-    const float3 _e2 = path_pbr_ng(ray_21, hit_5);
+    const float3 _e2 = path_pbr_ng(ray_20, hit_5);
     float3 n_14 = faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return ((dot(n_14, ray_21.dir) < 0.0) ? n_14 : _e2);
+    return ((dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2);
 }
 
 float pbr_alpha2_(float roughness)
@@ -2005,17 +2000,17 @@ float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, fl
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
-float3 path_pbr_shade(PathPbr m_3, Ray ray_22, Hit hit_6, float3 secondary_1)
+float3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, float3 secondary_1)
 {
     float3 direct_1 = (float3)0;
     uint i_7 = (uint)0;
     float w = (float)0;
 
-    const float3 _e4 = path_pbr_n(ray_22, hit_6);
-    const float3 _e6 = normalize_vec3f(ray_22.dir);
+    const float3 _e4 = path_pbr_n(ray_21, hit_6);
+    const float3 _e6 = normalize_vec3f(ray_21.dir);
     float3 v_7 = -(_e6);
     direct_1 = (0.0).xxx;
-    const float3 _e11 = path_pbr_ng(ray_22, hit_6);
+    const float3 _e11 = path_pbr_ng(ray_21, hit_6);
     const uint _e13 = light_count_query();
     i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -2055,27 +2050,27 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_23, Hit hit_7, float3 secondary_2)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7, float3 secondary_2)
 {
     switch(type_id_4) {
         case 0u: {
             const PathDiffuse _e5 = load_PathDiffuse(offset_13);
-            const float3 _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2);
+            const float3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             const QuadLamp _e7 = load_QuadLamp(offset_13);
-            const float3 _e8 = quad_lamp_shade(_e7, ray_23, hit_7);
+            const float3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
             return _e8;
         }
         case 2u: {
             const SphereLamp _e9 = load_SphereLamp(offset_13);
-            const float3 _e10 = sphere_lamp_shade(_e9, ray_23, hit_7);
+            const float3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
             return _e10;
         }
         case 3u: {
             const PathPbr _e11 = load_PathPbr(offset_13);
-            const float3 _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2);
+            const float3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -2085,32 +2080,32 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_23, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_24, Candidate c_4)
+float3 shade_direct(Ray ray_23, Candidate c_4)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_24, c_4);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_23, c_4);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_25, float t_1, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_24, float t_1, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_26, float t_2, float3 radiance_1)
+float3 through_medium(Ray ray_25, float t_2, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_26.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_26.medium - 1u)*128+0)), asfloat(instances.Load4((ray_26.medium - 1u)*128+16)), asfloat(instances.Load4((ray_26.medium - 1u)*128+32)), asfloat(instances.Load4((ray_26.medium - 1u)*128+48)), asfloat(instances.Load4((ray_26.medium - 1u)*128+64)), asfloat(instances.Load4((ray_26.medium - 1u)*128+80)), asuint(instances.Load((ray_26.medium - 1u)*128+96)), asuint(instances.Load((ray_26.medium - 1u)*128+100)), asuint(instances.Load((ray_26.medium - 1u)*128+104)), asuint(instances.Load((ray_26.medium - 1u)*128+108)), asuint(instances.Load((ray_26.medium - 1u)*128+112)), asuint(instances.Load((ray_26.medium - 1u)*128+116)), asuint(instances.Load((ray_26.medium - 1u)*128+120)), asuint(instances.Load((ray_26.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_25.medium - 1u)*128+0)), asfloat(instances.Load4((ray_25.medium - 1u)*128+16)), asfloat(instances.Load4((ray_25.medium - 1u)*128+32)), asfloat(instances.Load4((ray_25.medium - 1u)*128+48)), asfloat(instances.Load4((ray_25.medium - 1u)*128+64)), asfloat(instances.Load4((ray_25.medium - 1u)*128+80)), asuint(instances.Load((ray_25.medium - 1u)*128+96)), asuint(instances.Load((ray_25.medium - 1u)*128+100)), asuint(instances.Load((ray_25.medium - 1u)*128+104)), asuint(instances.Load((ray_25.medium - 1u)*128+108)), asuint(instances.Load((ray_25.medium - 1u)*128+112)), asuint(instances.Load((ray_25.medium - 1u)*128+116)), asuint(instances.Load((ray_25.medium - 1u)*128+120)), asuint(instances.Load((ray_25.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
@@ -2123,9 +2118,9 @@ PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
     return ret;
 }
 
-PathState start_path(Ray ray_27)
+PathState start_path(Ray ray_26)
 {
-    const PathState pathstate = ConstructPathState(ray_27, (1.0).xxx, (0.0).xxx, true);
+    const PathState pathstate = ConstructPathState(ray_26, (1.0).xxx, (0.0).xxx, true);
     return pathstate;
 }
 
@@ -2154,7 +2149,7 @@ void rt_spawn(float3 dir_5, float3 weight)
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_28, Hit hit_8)
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8)
 {
     float3 weight_1 = (float3)0;
 
@@ -2163,7 +2158,7 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_28, Hit hit_8)
     const float2 _e12 = rand2_next();
     const float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_28.depth >= m_4.roulette_depth)) {
+    if ((ray_27.depth >= m_4.roulette_depth)) {
         float q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         const float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -2246,13 +2241,13 @@ PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 
     return pbrsample_2;
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9)
+void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9)
 {
     float3 weight_2 = (float3)0;
 
-    const float3 _e3 = path_pbr_ng(ray_29, hit_9);
-    const float3 _e4 = path_pbr_n(ray_29, hit_9);
-    const float3 _e6 = normalize_vec3f(ray_29.dir);
+    const float3 _e3 = path_pbr_ng(ray_28, hit_9);
+    const float3 _e4 = path_pbr_n(ray_28, hit_9);
+    const float3 _e6 = normalize_vec3f(ray_28.dir);
     float3 v_8 = -(_e6);
     const float _e11 = rand_next();
     const float2 _e12 = rand2_next();
@@ -2261,7 +2256,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9)
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_29.depth >= m_5.roulette_depth)) {
+    if ((ray_28.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2279,17 +2274,17 @@ void path_pbr_rays(PathPbr m_5, Ray ray_29, Hit hit_9)
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_30, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_29, Hit hit_10)
 {
     switch(type_id_6) {
         case 0u: {
             const PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_30, hit_10);
+            path_diffuse_rays(_e4, ray_29, hit_10);
             return;
         }
         case 3u: {
             const PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_30, hit_10);
+            path_pbr_rays(_e5, ray_29, hit_10);
             return;
         }
         default: {
@@ -2328,26 +2323,26 @@ PathState path_step(PathState s_2, Candidate c_5)
     float3 weight_3 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_36 = s_2.ray;
+    Ray ray_35 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_36);
+        const float3 _e14 = miss(ray_35);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
         const PathState pathstate_1 = _e17;
         return pathstate_1;
     }
     GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_5.slot*128+0)), asfloat(instances.Load4(c_5.slot*128+16)), asfloat(instances.Load4(c_5.slot*128+32)), asfloat(instances.Load4(c_5.slot*128+48)), asfloat(instances.Load4(c_5.slot*128+64)), asfloat(instances.Load4(c_5.slot*128+80)), asuint(instances.Load(c_5.slot*128+96)), asuint(instances.Load(c_5.slot*128+100)), asuint(instances.Load(c_5.slot*128+104)), asuint(instances.Load(c_5.slot*128+108)), asuint(instances.Load(c_5.slot*128+112)), asuint(instances.Load(c_5.slot*128+116)), asuint(instances.Load(c_5.slot*128+120)), asuint(instances.Load(c_5.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_36, c_5);
+    const Hit _e22 = finish_hit(ray_35, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = (0.0).xxx;
     weight_3 = (0.0).xxx;
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_36.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_35.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_36, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_35, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -2357,7 +2352,7 @@ PathState path_step(PathState s_2, Candidate c_5)
             weight_3 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_36, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_35, _e22, (0.0).xxx);
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2376,7 +2371,7 @@ PathState path_step(PathState s_2, Candidate c_5)
         const PathState pathstate_3 = _e89;
         return pathstate_3;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_36.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_35.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -2393,7 +2388,7 @@ PathState path_step(PathState s_2, Candidate c_5)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_36.depth + 1u), RAY_SECONDARY, ray_36.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_35.depth + 1u), RAY_SECONDARY, ray_35.medium);
     out_.live = true;
     PathState _e128 = out_;
     const PathState pathstate_5 = _e128;

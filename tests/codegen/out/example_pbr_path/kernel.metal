@@ -590,11 +590,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_6 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_6) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -602,19 +603,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_6 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_6;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_6;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -661,7 +653,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -738,7 +730,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -754,10 +746,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_5 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_5];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -788,7 +780,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -870,14 +862,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_6,
+    Ray ray_5,
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f_1 = ray_6.origin - s.center;
-    float a_5 = metal::dot(ray_6.dir, ray_6.dir);
-    float b_8 = -(metal::dot(f_1, ray_6.dir));
-    metal::float3 l_6 = f_1 + (ray_6.dir * metal::float3(b_8 / a_5));
+    metal::float3 f_1 = ray_5.origin - s.center;
+    float a_5 = metal::dot(ray_5.dir, ray_5.dir);
+    float b_8 = -(metal::dot(f_1, ray_5.dir));
+    metal::float3 l_6 = f_1 + (ray_5.dir * metal::float3(b_8 / a_5));
     float r2_ = s.radius * s.radius;
     float disc = a_5 * (r2_ - metal::dot(l_6, l_6));
     if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
@@ -889,17 +881,17 @@ Intersection sphere_intersect(
     float t1_2 = q_1 / a_5;
     t = metal::min(t0_1, t1_2);
     float _e52 = t;
-    if (!((_e52 >= ray_6.tmin))) {
+    if (!((_e52 >= ray_5.tmin))) {
         t = metal::max(t0_1, t1_2);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax)))) {
+    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t;
-    metal::float3 _e82 = normalize_vec3f((ray_6.origin + (ray_6.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_5.origin + (ray_5.dir * metal::float3(_e76))) - s.center);
     float u_4 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv = metal::float2(u_4, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t;
@@ -909,19 +901,19 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_3,
-    Ray ray_7,
+    Ray ray_6,
     device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Sphere _e2 = load_Sphere(offset_3, params, _buffer_sizes);
-    Intersection _e3 = sphere_intersect(_e2, ray_7, F32_INF);
+    Intersection _e3 = sphere_intersect(_e2, ray_6, F32_INF);
     return _e3;
 }
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_8,
+    Ray ray_7,
     Candidate best_1,
     bool shadow_1,
     device type_5 const& params,
@@ -934,12 +926,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_8);
+    Ray _e7 = to_object(inst_6, ray_7);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_2;
@@ -949,7 +941,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_10 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_8, c_10);
+        bool _e40 = accept(inst_6, ray_7, c_10);
         if (_e40) {
             return c_10;
         }
@@ -958,10 +950,10 @@ Candidate intersect_object(
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_6 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_6 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
@@ -1032,7 +1024,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_9,
+    Ray ray_8,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -1044,9 +1036,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_9.origin, ray_9.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_8.origin, ray_8.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_9.origin + (ray_9.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_8.origin + (ray_8.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1087,7 +1079,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_9.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_8.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1172,17 +1164,17 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_10 = {};
+    Ray ray_9 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_9.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_10.medium = _e17;
-    Ray _e18 = ray_10;
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
     return _e18;
 }
 
@@ -1192,7 +1184,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_11,
+    Ray ray_10,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1211,7 +1203,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1220,7 +1212,7 @@ Candidate intersect_scene(
     }
     uint base_6 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_6];
-    BoxRay _e19 = header_box_ray(header_3, ray_11);
+    BoxRay _e19 = box_ray(header_3, ray_10);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1241,7 +1233,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_11, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_10, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1313,7 +1305,7 @@ ConstantBackground load_ConstantBackground(
 
 metal::float3 constant_background(
     ConstantBackground b_6,
-    Ray ray_12
+    Ray ray_11
 ) {
     return b_6.color;
 }
@@ -1321,17 +1313,17 @@ metal::float3 constant_background(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_13,
+    Ray ray_12,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = constant_background(_e2, ray_13);
+    metal::float3 _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_14,
+    Ray ray_13,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1340,7 +1332,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1800,7 +1792,7 @@ float mis_light_weight(
 
 metal::float3 path_diffuse_shade(
     PathDiffuse m,
-    Ray ray_15,
+    Ray ray_14,
     Hit hit_1,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1819,8 +1811,8 @@ metal::float3 path_diffuse_shade(
 ) {
     metal::float3 direct = {};
     uint i_6 = {};
-    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
+    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = metal::float3(0.0);
     uint _e16 = light_count_query(frame);
     i_6 = 0u;
@@ -1863,15 +1855,15 @@ QuadLamp load_QuadLamp(
 }
 
 bool after_nee_bounce(
-    Ray ray_16
+    Ray ray_15
 ) {
-    return metal::dot(ray_16.dir, ray_16.dir) > 2.0;
+    return metal::dot(ray_15.dir, ray_15.dir) > 2.0;
 }
 
 float bounce_pdf(
-    Ray ray_17
+    Ray ray_16
 ) {
-    float x_6 = metal::length(ray_17.dir) - MIS_BOUNCE_LENGTH;
+    float x_6 = metal::length(ray_16.dir) - MIS_BOUNCE_LENGTH;
     if (!((x_6 > -0.25))) {
         return 0.0;
     }
@@ -1880,7 +1872,7 @@ float bounce_pdf(
 
 metal::float3 quad_lamp_shade(
     QuadLamp m_1,
-    Ray ray_18,
+    Ray ray_17,
     Hit hit_2,
     thread uint& F32_INF
 ) {
@@ -1888,14 +1880,14 @@ metal::float3 quad_lamp_shade(
         return metal::float3(0.0);
     }
     metal::float3 le = m_1.color * metal::float3(m_1.intensity);
-    bool _e11 = after_nee_bounce(ray_18);
+    bool _e11 = after_nee_bounce(ray_17);
     if (!(_e11)) {
         return le;
     }
-    float _e13 = bounce_pdf(ray_18);
-    float len = metal::length(ray_18.dir);
+    float _e13 = bounce_pdf(ray_17);
+    float len = metal::length(ray_17.dir);
     float dist_5 = hit_2.t * len;
-    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_18.dir)) / len;
+    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_17.dir)) / len;
     float pl = (dist_5 * dist_5) / metal::max(cos_l * m_1.area, 0.000000000000000000000000000001);
     float _e29 = mis_weight(_e13, pl, F32_INF);
     return le * metal::float3(_e29);
@@ -1916,7 +1908,7 @@ SphereLamp load_SphereLamp(
 
 metal::float3 sphere_lamp_shade(
     SphereLamp m_2,
-    Ray ray_19,
+    Ray ray_18,
     Hit hit_3,
     thread uint& F32_INF
 ) {
@@ -1925,13 +1917,13 @@ metal::float3 sphere_lamp_shade(
     }
     float r2_3 = metal::max(m_2.radius * m_2.radius, 0.00000000000000000001);
     metal::float3 le_1 = m_2.color * metal::float3((m_2.intensity * INV_PI) / r2_3);
-    bool _e19 = after_nee_bounce(ray_19);
+    bool _e19 = after_nee_bounce(ray_18);
     if (!(_e19)) {
         return le_1;
     }
-    float _e21 = bounce_pdf(ray_19);
+    float _e21 = bounce_pdf(ray_18);
     metal::float3 center = hit_3.position - (hit_3.normal * metal::float3(m_2.radius));
-    metal::float3 to_center_1 = center - ray_19.origin;
+    metal::float3 to_center_1 = center - ray_18.origin;
     float s2_1 = r2_3 / metal::max(metal::dot(to_center_1, to_center_1), r2_3);
     float one_minus_cos_max_1 = s2_1 / (1.0 + metal::sqrt(1.0 - s2_1));
     float pl_1 = 1.0 / metal::max(TAU * one_minus_cos_max_1, 0.000000000000000000000000000001);
@@ -1957,19 +1949,19 @@ PathPbr load_PathPbr(
 }
 
 metal::float3 path_pbr_ng(
-    Ray ray_20,
+    Ray ray_19,
     Hit hit_4
 ) {
-    return metal::faceforward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
+    return metal::faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
 metal::float3 path_pbr_n(
-    Ray ray_21,
+    Ray ray_20,
     Hit hit_5
 ) {
-    metal::float3 _e2 = path_pbr_ng(ray_21, hit_5);
+    metal::float3 _e2 = path_pbr_ng(ray_20, hit_5);
     metal::float3 n_14 = metal::faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return (metal::dot(n_14, ray_21.dir) < 0.0) ? n_14 : _e2;
+    return (metal::dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2;
 }
 
 float pbr_alpha2_(
@@ -2086,7 +2078,7 @@ float pbr_pdf(
 
 metal::float3 path_pbr_shade(
     PathPbr m_3,
-    Ray ray_22,
+    Ray ray_21,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -2106,11 +2098,11 @@ metal::float3 path_pbr_shade(
     metal::float3 direct_1 = {};
     uint i_7 = {};
     float w = {};
-    metal::float3 _e4 = path_pbr_n(ray_22, hit_6);
-    metal::float3 _e6 = normalize_vec3f(ray_22.dir);
+    metal::float3 _e4 = path_pbr_n(ray_21, hit_6);
+    metal::float3 _e6 = normalize_vec3f(ray_21.dir);
     metal::float3 v_7 = -(_e6);
     direct_1 = metal::float3(0.0);
-    metal::float3 _e11 = path_pbr_ng(ray_22, hit_6);
+    metal::float3 _e11 = path_pbr_ng(ray_21, hit_6);
     uint _e13 = light_count_query(frame);
     i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -2149,7 +2141,7 @@ metal::float3 path_pbr_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_13,
-    Ray ray_23,
+    Ray ray_22,
     Hit hit_7,
     metal::float3 secondary_2,
     constant FrameUniforms& frame,
@@ -2169,22 +2161,22 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13, params, _buffer_sizes);
-            metal::float3 _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+            metal::float3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             QuadLamp _e7 = load_QuadLamp(offset_13, params, _buffer_sizes);
-            metal::float3 _e8 = quad_lamp_shade(_e7, ray_23, hit_7, F32_INF);
+            metal::float3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7, F32_INF);
             return _e8;
         }
         case 2u: {
             SphereLamp _e9 = load_SphereLamp(offset_13, params, _buffer_sizes);
-            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_23, hit_7, F32_INF);
+            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7, F32_INF);
             return _e10;
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13, params, _buffer_sizes);
-            metal::float3 _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+            metal::float3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -2195,7 +2187,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_24,
+    Ray ray_23,
     Candidate c_4,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2213,15 +2205,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_24, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_23, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_14,
-    Ray ray_25,
+    Ray ray_24,
     float t_1,
     metal::float3 radiance
 ) {
@@ -2229,7 +2221,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_26,
+    Ray ray_25,
     float t_2,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2238,21 +2230,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_26.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_26.medium - 1u];
+    GpuInstance inst_9 = instances[ray_25.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
 PathState start_path(
-    Ray ray_27
+    Ray ray_26
 ) {
-    return PathState {ray_27, metal::float3(1.0), metal::float3(0.0), true};
+    return PathState {ray_26, metal::float3(1.0), metal::float3(0.0), true};
 }
 
 metal::float3 sample_cosine_hemisphere(
@@ -2291,7 +2283,7 @@ void rt_spawn(
 
 void path_diffuse_rays(
     PathDiffuse m_4,
-    Ray ray_28,
+    Ray ray_27,
     Hit hit_8,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2305,7 +2297,7 @@ void path_diffuse_rays(
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_28.depth >= m_4.roulette_depth) {
+    if (ray_27.depth >= m_4.roulette_depth) {
         float q_4 = metal::saturate(metal::max(m_4.albedo[0], metal::max(m_4.albedo[1], m_4.albedo[2])));
         float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_4) {
@@ -2386,7 +2378,7 @@ PbrSample pbr_sample(
 
 void path_pbr_rays(
     PathPbr m_5,
-    Ray ray_29,
+    Ray ray_28,
     Hit hit_9,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2395,9 +2387,9 @@ void path_pbr_rays(
     thread uint& spawn_count
 ) {
     metal::float3 weight_2 = {};
-    metal::float3 _e3 = path_pbr_ng(ray_29, hit_9);
-    metal::float3 _e4 = path_pbr_n(ray_29, hit_9);
-    metal::float3 _e6 = normalize_vec3f(ray_29.dir);
+    metal::float3 _e3 = path_pbr_ng(ray_28, hit_9);
+    metal::float3 _e4 = path_pbr_n(ray_28, hit_9);
+    metal::float3 _e6 = normalize_vec3f(ray_28.dir);
     metal::float3 v_8 = -(_e6);
     float _e11 = rand_next(scratch, rng_state);
     metal::float2 _e12 = rand2_next(scratch, rng_state);
@@ -2406,7 +2398,7 @@ void path_pbr_rays(
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_29.depth >= m_5.roulette_depth) {
+    if (ray_28.depth >= m_5.roulette_depth) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2427,7 +2419,7 @@ void path_pbr_rays(
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_30,
+    Ray ray_29,
     Hit hit_10,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2440,12 +2432,12 @@ void dispatch_secondary_rays(
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15, params, _buffer_sizes);
-            path_diffuse_rays(_e4, ray_30, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_diffuse_rays(_e4, ray_29, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15, params, _buffer_sizes);
-            path_pbr_rays(_e5, ray_30, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_pbr_rays(_e5, ray_29, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -2508,25 +2500,25 @@ PathState path_step(
     metal::float3 dir_8 = {};
     metal::float3 weight_3 = {};
     metal::float3 beta = {};
-    Ray ray_31 = s_2.ray;
+    Ray ray_30 = s_2.ray;
     out = s_2;
     out.live = false;
     if (c_5.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_31, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_30, frame, params, _buffer_sizes);
         out.radiance = s_2.radiance + (s_2.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_10 = instances[c_5.slot];
-    Hit _e22 = finish_hit(ray_31, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_30, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = metal::float3(0.0);
     weight_3 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_2.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_31, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -2536,7 +2528,7 @@ PathState path_step(
             weight_3 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_31, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     out.radiance = s_2.radiance + (s_2.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {

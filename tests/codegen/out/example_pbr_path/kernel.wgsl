@@ -498,7 +498,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_6 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_6) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -506,16 +509,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_6 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_6 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_6);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_6);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -551,7 +548,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_4, (v_6 * rcp), (w_1 * rcp)), hit_13);
 }
 
-fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -603,7 +600,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -612,10 +609,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_5);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_5 = inst_2.blas_root;
     let header_2 = nodes[base_5];
-    let _e12 = header_box_ray(header_2, ray_5);
+    let _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -634,7 +631,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
                 let _e38 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -714,13 +711,13 @@ fn load_Sphere(offset_2: u32) -> Sphere {
     return Sphere(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24));
 }
 
-fn sphere_intersect(s: Sphere, ray_6: Ray) -> Intersection {
+fn sphere_intersect(s: Sphere, ray_5: Ray) -> Intersection {
     var t: f32;
 
-    let f_1 = (ray_6.origin - s.center);
-    let a_5 = dot(ray_6.dir, ray_6.dir);
-    let b_8 = -(dot(f_1, ray_6.dir));
-    let l_6 = (f_1 + (ray_6.dir * vec3((b_8 / a_5))));
+    let f_1 = (ray_5.origin - s.center);
+    let a_5 = dot(ray_5.dir, ray_5.dir);
+    let b_8 = -(dot(f_1, ray_5.dir));
+    let l_6 = (f_1 + (ray_5.dir * vec3((b_8 / a_5))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if (!((disc >= 0f)) || !((a_5 > 0f))) {
@@ -732,39 +729,39 @@ fn sphere_intersect(s: Sphere, ray_6: Ray) -> Intersection {
     let t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     let _e52 = t;
-    if !((_e52 >= ray_6.tmin)) {
+    if !((_e52 >= ray_5.tmin)) {
         t = max(t0_1, t1_2);
     }
     let _e57 = t;
     let _e60 = t;
-    if !(((_e57 >= ray_6.tmin) && (_e60 <= ray_6.tmax))) {
+    if !(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax))) {
         let _e66 = F32_INF;
         return Intersection(bitcast<f32>(_e66), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let _e76 = t;
-    let _e82 = normalize_vec3f(((ray_6.origin + (ray_6.dir * vec3(_e76))) - s.center));
+    let _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * vec3(_e76))) - s.center));
     let u_4 = select((0.5f + (atan2(_e82.z, -(_e82.x)) / TAU)), 0.5f, ((_e82.x == 0f) && (_e82.z == 0f)));
     let uv = vec2<f32>(u_4, (acos(min(max(_e82.y, -1f), 1f)) * INV_PI));
     let _e109 = t;
     return Intersection(_e109, _e82, uv);
 }
 
-fn dispatch_intersection(type_id_1: u32, offset_3: u32, ray_7: Ray) -> Intersection {
+fn dispatch_intersection(type_id_1: u32, offset_3: u32, ray_6: Ray) -> Intersection {
     let _e2 = load_Sphere(offset_3);
-    let _e3 = sphere_intersect(_e2, ray_7);
+    let _e3 = sphere_intersect(_e2, ray_6);
     return _e3;
 }
 
-fn intersect_object(slot_2: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_7: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_8);
+    let _e7 = to_object(inst_6, ray_7);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1);
         return _e15;
     }
     let _e18 = r_2;
@@ -774,7 +771,7 @@ fn intersect_object(slot_2: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) 
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
         let c_10 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_6, ray_8, c_10);
+        let _e40 = accept(inst_6, ray_7, c_10);
         if _e40 {
             return c_10;
         }
@@ -782,8 +779,8 @@ fn intersect_object(slot_2: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) 
     return best_1;
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_6 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -836,15 +833,15 @@ fn normal_to_world(inst_5: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_9: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_8: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_9.origin, (ray_9.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_8.origin, (ray_8.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_8.origin + (ray_8.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -885,7 +882,7 @@ fn finish_hit(ray_9: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_9.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_8.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -937,18 +934,18 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_10: Ray;
+    var ray_9: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_10 = _e7;
-    ray_10.depth = 0u;
-    ray_10.kind = RAY_CAMERA;
-    let _e15 = ray_10.origin;
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    let _e15 = ray_9.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_10.medium = _e17;
-    let _e18 = ray_10;
+    ray_9.medium = _e17;
+    let _e18 = ray_9;
     return _e18;
 }
 
@@ -956,7 +953,7 @@ fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -965,7 +962,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_11.tmax);
+    let _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -974,7 +971,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     }
     let base_6 = frame_3.tlas_root;
     let header_3 = nodes[base_6];
-    let _e19 = header_box_ray(header_3, ray_11);
+    let _e19 = box_ray(header_3, ray_10);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -992,7 +989,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_11, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1058,22 +1055,22 @@ fn load_ConstantBackground(offset_4: u32) -> ConstantBackground {
     return ConstantBackground(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn constant_background(b_6: ConstantBackground, ray_12: Ray) -> vec3<f32> {
+fn constant_background(b_6: ConstantBackground, ray_11: Ray) -> vec3<f32> {
     return b_6.color;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_13: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_12: Ray) -> vec3<f32> {
     let _e2 = load_ConstantBackground(offset_5);
-    let _e3 = constant_background(_e2, ray_13);
+    let _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
-fn miss(ray_14: Ray) -> vec3<f32> {
+fn miss(ray_13: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1396,12 +1393,12 @@ fn mis_light_weight(l_2: LightSample, bsdf_pdf: f32) -> f32 {
     return _e8;
 }
 
-fn path_diffuse_shade(m: PathDiffuse, ray_15: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn path_diffuse_shade(m: PathDiffuse, ray_14: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
     var i_6: u32;
 
-    let n_13 = faceForward(hit_1.normal, ray_15.dir, hit_1.geometric_normal);
-    let ng = faceForward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
+    let n_13 = faceForward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    let ng = faceForward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = vec3(0f);
     let _e16 = light_count_query();
     i_6 = 0u;
@@ -1434,31 +1431,31 @@ fn load_QuadLamp(offset_10: u32) -> QuadLamp {
     return QuadLamp(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), bitcast<f32>(_e30));
 }
 
-fn after_nee_bounce(ray_16: Ray) -> bool {
-    return (dot(ray_16.dir, ray_16.dir) > 2f);
+fn after_nee_bounce(ray_15: Ray) -> bool {
+    return (dot(ray_15.dir, ray_15.dir) > 2f);
 }
 
-fn bounce_pdf(ray_17: Ray) -> f32 {
-    let x_6 = (length(ray_17.dir) - MIS_BOUNCE_LENGTH);
+fn bounce_pdf(ray_16: Ray) -> f32 {
+    let x_6 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
     if !((x_6 > -0.25f)) {
         return 0f;
     }
     return (exp((max(x_6, 0f) * 90f)) - 1f);
 }
 
-fn quad_lamp_shade(m_1: QuadLamp, ray_18: Ray, hit_2: Hit) -> vec3<f32> {
+fn quad_lamp_shade(m_1: QuadLamp, ray_17: Ray, hit_2: Hit) -> vec3<f32> {
     if !(hit_2.front_face) {
         return vec3(0f);
     }
     let le = (m_1.color * vec3(m_1.intensity));
-    let _e11 = after_nee_bounce(ray_18);
+    let _e11 = after_nee_bounce(ray_17);
     if !(_e11) {
         return le;
     }
-    let _e13 = bounce_pdf(ray_18);
-    let len = length(ray_18.dir);
+    let _e13 = bounce_pdf(ray_17);
+    let len = length(ray_17.dir);
     let dist_5 = (hit_2.t * len);
-    let cos_l = (abs(dot(hit_2.geometric_normal, ray_18.dir)) / len);
+    let cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
     let pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 0.000000000000000000000000000001f));
     let _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
@@ -1473,19 +1470,19 @@ fn load_SphereLamp(offset_11: u32) -> SphereLamp {
     return SphereLamp(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), bitcast<f32>(_e30));
 }
 
-fn sphere_lamp_shade(m_2: SphereLamp, ray_19: Ray, hit_3: Hit) -> vec3<f32> {
+fn sphere_lamp_shade(m_2: SphereLamp, ray_18: Ray, hit_3: Hit) -> vec3<f32> {
     if !(hit_3.front_face) {
         return vec3(0f);
     }
     let r2_3 = max((m_2.radius * m_2.radius), 0.00000000000000000001f);
     let le_1 = (m_2.color * vec3(((m_2.intensity * INV_PI) / r2_3)));
-    let _e19 = after_nee_bounce(ray_19);
+    let _e19 = after_nee_bounce(ray_18);
     if !(_e19) {
         return le_1;
     }
-    let _e21 = bounce_pdf(ray_19);
+    let _e21 = bounce_pdf(ray_18);
     let center = (hit_3.position - (hit_3.normal * vec3(m_2.radius)));
-    let to_center_1 = (center - ray_19.origin);
+    let to_center_1 = (center - ray_18.origin);
     let s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     let one_minus_cos_max_1 = (s2_1 / (1f + sqrt((1f - s2_1))));
     let pl_1 = (1f / max((TAU * one_minus_cos_max_1), 0.000000000000000000000000000001f));
@@ -1506,14 +1503,14 @@ fn load_PathPbr(offset_12: u32) -> PathPbr {
     return PathPbr(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), bitcast<f32>(_e30), vec3<f32>(bitcast<f32>(_e36), bitcast<f32>(_e42), bitcast<f32>(_e48)), _e55);
 }
 
-fn path_pbr_ng(ray_20: Ray, hit_4: Hit) -> vec3<f32> {
-    return faceForward(hit_4.geometric_normal, ray_20.dir, hit_4.geometric_normal);
+fn path_pbr_ng(ray_19: Ray, hit_4: Hit) -> vec3<f32> {
+    return faceForward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
-fn path_pbr_n(ray_21: Ray, hit_5: Hit) -> vec3<f32> {
-    let _e2 = path_pbr_ng(ray_21, hit_5);
+fn path_pbr_n(ray_20: Ray, hit_5: Hit) -> vec3<f32> {
+    let _e2 = path_pbr_ng(ray_20, hit_5);
     let n_14 = faceForward(hit_5.normal, -(_e2), hit_5.normal);
-    return select(_e2, n_14, (dot(n_14, ray_21.dir) < 0f));
+    return select(_e2, n_14, (dot(n_14, ray_20.dir) < 0f));
 }
 
 fn pbr_alpha2_(roughness: f32) -> f32 {
@@ -1592,16 +1589,16 @@ fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>,
     return ((_e17 * _e22) + (((1f - _e17) * ndl_2) * INV_PI));
 }
 
-fn path_pbr_shade(m_3: PathPbr, ray_22: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn path_pbr_shade(m_3: PathPbr, ray_21: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     var direct_1: vec3<f32>;
     var i_7: u32;
     var w: f32;
 
-    let _e4 = path_pbr_n(ray_22, hit_6);
-    let _e6 = normalize_vec3f(ray_22.dir);
+    let _e4 = path_pbr_n(ray_21, hit_6);
+    let _e6 = normalize_vec3f(ray_21.dir);
     let v_7 = -(_e6);
     direct_1 = vec3(0f);
-    let _e11 = path_pbr_ng(ray_22, hit_6);
+    let _e11 = path_pbr_ng(ray_21, hit_6);
     let _e13 = light_count_query();
     i_7 = 0u;
     loop {
@@ -1632,26 +1629,26 @@ fn path_pbr_shade(m_3: PathPbr, ray_22: Ray, hit_6: Hit, secondary_1: vec3<f32>)
     return ((m_3.emissive + _e53) + secondary_1);
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_23: Ray, hit_7: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_22: Ray, hit_7: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_PathDiffuse(offset_13);
-            let _e6 = path_diffuse_shade(_e5, ray_23, hit_7, secondary_2);
+            let _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             let _e7 = load_QuadLamp(offset_13);
-            let _e8 = quad_lamp_shade(_e7, ray_23, hit_7);
+            let _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
             return _e8;
         }
         case 2u: {
             let _e9 = load_SphereLamp(offset_13);
-            let _e10 = sphere_lamp_shade(_e9, ray_23, hit_7);
+            let _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
             return _e10;
         }
         case 3u: {
             let _e11 = load_PathPbr(offset_13);
-            let _e12 = path_pbr_shade(_e11, ray_23, hit_7, secondary_2);
+            let _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -1660,34 +1657,34 @@ fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_23: Ray, hit_7: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_24: Ray, c_4: Candidate) -> vec3<f32> {
+fn shade_direct(ray_23: Ray, c_4: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_24, c_4);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_23, c_4);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_14: u32, ray_25: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_14: u32, ray_24: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_26: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_25: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_26.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_26.medium - 1u)];
+    let inst_9 = instances[(ray_25.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_26, t_2, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
-fn start_path(ray_27: Ray) -> PathState {
-    return PathState(ray_27, vec3(1f), vec3(0f), true);
+fn start_path(ray_26: Ray) -> PathState {
+    return PathState(ray_26, vec3(1f), vec3(0f), true);
 }
 
 fn sample_cosine_hemisphere(n_8: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
@@ -1712,7 +1709,7 @@ fn rt_spawn(dir_5: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn path_diffuse_rays(m_4: PathDiffuse, ray_28: Ray, hit_8: Hit) {
+fn path_diffuse_rays(m_4: PathDiffuse, ray_27: Ray, hit_8: Hit) {
     var weight_1: vec3<f32>;
 
     let ng_1 = select(-(hit_8.geometric_normal), hit_8.geometric_normal, hit_8.front_face);
@@ -1720,7 +1717,7 @@ fn path_diffuse_rays(m_4: PathDiffuse, ray_28: Ray, hit_8: Hit) {
     let _e12 = rand2_next();
     let _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_28.depth >= m_4.roulette_depth) {
+    if (ray_27.depth >= m_4.roulette_depth) {
         let q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         let _e28 = rand_next();
         if (_e28 >= q_4) {
@@ -1790,12 +1787,12 @@ fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f3
     return PbrSample(_e46, weight_5, _e33);
 }
 
-fn path_pbr_rays(m_5: PathPbr, ray_29: Ray, hit_9: Hit) {
+fn path_pbr_rays(m_5: PathPbr, ray_28: Ray, hit_9: Hit) {
     var weight_2: vec3<f32>;
 
-    let _e3 = path_pbr_ng(ray_29, hit_9);
-    let _e4 = path_pbr_n(ray_29, hit_9);
-    let _e6 = normalize_vec3f(ray_29.dir);
+    let _e3 = path_pbr_ng(ray_28, hit_9);
+    let _e4 = path_pbr_n(ray_28, hit_9);
+    let _e6 = normalize_vec3f(ray_28.dir);
     let v_8 = -(_e6);
     let _e11 = rand_next();
     let _e12 = rand2_next();
@@ -1804,7 +1801,7 @@ fn path_pbr_rays(m_5: PathPbr, ray_29: Ray, hit_9: Hit) {
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_29.depth >= m_5.roulette_depth) {
+    if (ray_28.depth >= m_5.roulette_depth) {
         let _e31 = weight_2.x;
         let _e33 = weight_2.y;
         let _e35 = weight_2.z;
@@ -1822,16 +1819,16 @@ fn path_pbr_rays(m_5: PathPbr, ray_29: Ray, hit_9: Hit) {
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_30: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_29: Ray, hit_10: Hit) {
     switch type_id_6 {
         case 0u: {
             let _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_30, hit_10);
+            path_diffuse_rays(_e4, ray_29, hit_10);
             return;
         }
         case 3u: {
             let _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_30, hit_10);
+            path_pbr_rays(_e5, ray_29, hit_10);
             return;
         }
         default: {
@@ -1866,25 +1863,25 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     var weight_3: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_31 = s_2.ray;
+    let ray_30 = s_2.ray;
     out = s_2;
     out.live = false;
     if (c_5.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_31);
+        let _e14 = miss(ray_30);
         out.radiance = (s_2.radiance + (s_2.beta * _e14));
         let _e17 = out;
         return _e17;
     }
     let inst_10 = instances[c_5.slot];
-    let _e22 = finish_hit(ray_31, c_5);
+    let _e22 = finish_hit(ray_30, c_5);
     let error_4 = hit_error;
     spawned = false;
     dir_8 = vec3(0f);
     weight_3 = vec3(0f);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_31.depth < MAX_DEPTH)) {
+    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_30.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_31, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1894,7 +1891,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
             weight_3 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_31, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, vec3(0f));
     out.radiance = (s_2.radiance + (s_2.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1911,7 +1908,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_31.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_30.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT)) {
         let survive = (q_6 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1927,7 +1924,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_8;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_31.depth + 1u), RAY_SECONDARY, ray_31.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_30.depth + 1u), RAY_SECONDARY, ray_30.medium);
     out.live = true;
     let _e128 = out;
     return _e128;

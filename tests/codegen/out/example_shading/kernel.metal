@@ -563,11 +563,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_5 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_5) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -575,19 +576,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_4 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_4;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -634,7 +626,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -711,7 +703,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -727,10 +719,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -761,7 +753,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -831,7 +823,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_6,
+    Ray ray_5,
     Candidate best_1,
     bool shadow_1,
     thread uint& F32_INF,
@@ -843,22 +835,22 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_6);
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_6 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_6 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
@@ -929,7 +921,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_7,
+    Ray ray_6,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -941,9 +933,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_7.origin, ray_7.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_7.origin + (ray_7.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -984,7 +976,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_7.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1069,24 +1061,24 @@ Ray sample_camera_ray(
     device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_8 = {};
+    Ray ray_7 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    ray_8.medium = _e17;
-    Ray _e18 = ray_8;
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
     return _e18;
 }
 
 PathState start_path(
-    Ray ray_9
+    Ray ray_8
 ) {
-    return PathState {ray_9, metal::float3(1.0), metal::float3(0.0), true};
+    return PathState {ray_8, metal::float3(1.0), metal::float3(0.0), true};
 }
 
 metal::float3 node_frame_bounds(
@@ -1095,7 +1087,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_10,
+    Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1113,7 +1105,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1122,7 +1114,7 @@ Candidate intersect_scene(
     }
     uint base_2 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_2];
-    BoxRay _e19 = header_box_ray(header_3, ray_10);
+    BoxRay _e19 = box_ray(header_3, ray_9);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_2.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1143,7 +1135,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_2;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_10, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_9, _e54, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e55;
                 uint _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1221,9 +1213,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_6,
-    Ray ray_11
+    Ray ray_10
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_11.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_6.horizon, b_6.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1234,17 +1226,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_12,
+    Ray ray_11,
     device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_12);
+    metal::float3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_13,
+    Ray ray_12,
     constant FrameUniforms& frame,
     device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1253,7 +1245,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1285,13 +1277,13 @@ void rt_spawn(
 
 void mirror_rays(
     Mirror m,
-    Ray ray_14,
+    Ray ray_13,
     Hit hit_1,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_14.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_13.dir);
     rt_spawn(metal::reflect(_e4, hit_1.normal), m.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
@@ -1299,7 +1291,7 @@ void mirror_rays(
 void dispatch_secondary_rays(
     uint type_id_2,
     uint offset_5,
-    Ray ray_15,
+    Ray ray_14,
     Hit hit_2,
     device type_6 const& params,
     thread type_16& spawn_dirs,
@@ -1308,7 +1300,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Mirror _e3 = load_Mirror(offset_5, params, _buffer_sizes);
-    mirror_rays(_e3, ray_15, hit_2, spawn_dirs, spawn_weights, spawn_count);
+    mirror_rays(_e3, ray_14, hit_2, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1334,10 +1326,10 @@ BlinnPhong load_BlinnPhong(
 }
 
 metal::float3 shading_normal(
-    Ray ray_16,
+    Ray ray_15,
     Hit hit_3
 ) {
-    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_16.dir, hit_3.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
     return metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
@@ -1672,7 +1664,7 @@ LightSample sample_light_query(
 
 metal::float3 blinn_phong_shade(
     BlinnPhong m_1,
-    Ray ray_17,
+    Ray ray_16,
     Hit hit_4,
     constant FrameUniforms& frame,
     thread type_5& scratch,
@@ -1689,8 +1681,8 @@ metal::float3 blinn_phong_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_17, hit_4);
-    metal::float3 _e5 = normalize_vec3f(ray_17.dir);
+    metal::float3 _e3 = shading_normal(ray_16, hit_4);
+    metal::float3 _e5 = normalize_vec3f(ray_16.dir);
     metal::float3 v_3 = -(_e5);
     metal::float4 _e12 = sample_texture(m_1.texture, hit_4.uv * m_1.uv_scale, params, texels, _buffer_sizes);
     metal::float3 kd = m_1.diffuse * _e12.xyz;
@@ -1738,7 +1730,7 @@ Lambert load_Lambert(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_18,
+    Ray ray_17,
     Hit hit_5,
     constant FrameUniforms& frame,
     thread type_5& scratch,
@@ -1754,7 +1746,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color_1 = {};
     uint i_4 = {};
-    metal::float3 _e3 = shading_normal(ray_18, hit_5);
+    metal::float3 _e3 = shading_normal(ray_17, hit_5);
     color_1 = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_4 = 0u;
@@ -1783,7 +1775,7 @@ metal::float3 lambert_shade(
 
 metal::float3 mirror_shade(
     Mirror m_3,
-    Ray ray_19,
+    Ray ray_18,
     Hit hit_6,
     metal::float3 secondary
 ) {
@@ -1807,7 +1799,7 @@ UnlitTexture load_UnlitTexture(
 
 metal::float3 unlit_texture_shade(
     UnlitTexture m_4,
-    Ray ray_20,
+    Ray ray_19,
     Hit hit_7,
     device type_6 const& params,
     device type_6 const& texels,
@@ -1826,7 +1818,7 @@ metal::float3 unlit_texture_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_11,
-    Ray ray_21,
+    Ray ray_20,
     Hit hit_8,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1845,22 +1837,22 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             BlinnPhong _e5 = load_BlinnPhong(offset_11, params, _buffer_sizes);
-            metal::float3 _e6 = blinn_phong_shade(_e5, ray_21, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+            metal::float3 _e6 = blinn_phong_shade(_e5, ray_20, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_11, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_21, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_20, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         case 2u: {
             Mirror _e9 = load_Mirror(offset_11, params, _buffer_sizes);
-            metal::float3 _e10 = mirror_shade(_e9, ray_21, hit_8, secondary_1);
+            metal::float3 _e10 = mirror_shade(_e9, ray_20, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
             UnlitTexture _e11 = load_UnlitTexture(offset_11, params, _buffer_sizes);
-            metal::float3 _e12 = unlit_texture_shade(_e11, ray_21, hit_8, params, texels, _buffer_sizes);
+            metal::float3 _e12 = unlit_texture_shade(_e11, ray_20, hit_8, params, texels, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -1923,25 +1915,25 @@ PathState path_step(
     metal::float3 dir_6 = {};
     metal::float3 weight_1 = {};
     metal::float3 beta = {};
-    Ray ray_22 = s_1.ray;
+    Ray ray_21 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_3.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_22, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_21, frame, params, _buffer_sizes);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e22 = finish_hit(ray_22, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_21, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = metal::float3(0.0);
     weight_1 = metal::float3(0.0);
     if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_22, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_21, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1951,7 +1943,7 @@ PathState path_step(
             weight_1 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {

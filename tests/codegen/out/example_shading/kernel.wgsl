@@ -470,7 +470,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_5 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_5) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -478,16 +481,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_4 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_4 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -523,7 +520,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_2, (v_2 * rcp), (w * rcp)), hit_11);
 }
 
-fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -575,7 +572,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -584,10 +581,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_5);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_2 = nodes[base_1];
-    let _e12 = header_box_ray(header_2, ray_5);
+    let _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -606,7 +603,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
                 let _e38 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -678,23 +675,23 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     return _e138;
 }
 
-fn intersect_object(slot_2: u32, ray_6: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_6);
+    let _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_6 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
@@ -747,15 +744,15 @@ fn normal_to_world(inst_5: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_7: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_7.origin, (ray_7.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_7.origin + (ray_7.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -796,7 +793,7 @@ fn finish_hit(ray_7: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_7.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -848,30 +845,30 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_8: Ray;
+    var ray_7: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_8 = _e7;
-    ray_8.depth = 0u;
-    ray_8.kind = RAY_CAMERA;
-    let _e15 = ray_8.origin;
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    let _e15 = ray_7.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_8.medium = _e17;
-    let _e18 = ray_8;
+    ray_7.medium = _e17;
+    let _e18 = ray_7;
     return _e18;
 }
 
-fn start_path(ray_9: Ray) -> PathState {
-    return PathState(ray_9, vec3(1f), vec3(0f), true);
+fn start_path(ray_8: Ray) -> PathState {
+    return PathState(ray_8, vec3(1f), vec3(0f), true);
 }
 
 fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -880,7 +877,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_10.tmax);
+    let _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -889,7 +886,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     }
     let base_2 = frame_3.tlas_root;
     let header_3 = nodes[base_2];
-    let _e19 = header_box_ray(header_3, ray_10);
+    let _e19 = box_ray(header_3, ray_9);
     let _e22 = node_frame_bounds();
     let _e24 = best_2.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -907,7 +904,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_2;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_10, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_9, _e54, shadow_2);
                 best_2 = _e55;
                 let _e57 = best_2.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -979,8 +976,8 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_6: SkyGradient, ray_11: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_11.dir);
+fn sky_gradient(b_6: SkyGradient, ray_10: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_10.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_6.horizon, b_6.ground, vec3(min((-(y) * 4f), 1f)));
@@ -988,18 +985,18 @@ fn sky_gradient(b_6: SkyGradient, ray_11: Ray) -> vec3<f32> {
     return mix(b_6.horizon, b_6.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_12: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_11: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_3);
-    let _e3 = sky_gradient(_e2, ray_12);
+    let _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
-fn miss(ray_13: Ray) -> vec3<f32> {
+fn miss(ray_12: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1019,15 +1016,15 @@ fn rt_spawn(dir: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn mirror_rays(m: Mirror, ray_14: Ray, hit_1: Hit) {
-    let _e4 = normalize_vec3f(ray_14.dir);
+fn mirror_rays(m: Mirror, ray_13: Ray, hit_1: Hit) {
+    let _e4 = normalize_vec3f(ray_13.dir);
     rt_spawn(reflect(_e4, hit_1.normal), m.tint);
     return;
 }
 
-fn dispatch_secondary_rays(type_id_2: u32, offset_5: u32, ray_15: Ray, hit_2: Hit) {
+fn dispatch_secondary_rays(type_id_2: u32, offset_5: u32, ray_14: Ray, hit_2: Hit) {
     let _e3 = load_Mirror(offset_5);
-    mirror_rays(_e3, ray_15, hit_2);
+    mirror_rays(_e3, ray_14, hit_2);
     return;
 }
 
@@ -1048,8 +1045,8 @@ fn load_BlinnPhong(offset_6: u32) -> BlinnPhong {
     return BlinnPhong(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec3<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35), bitcast<f32>(_e41)), bitcast<f32>(_e48), vec3<f32>(bitcast<f32>(_e54), bitcast<f32>(_e60), bitcast<f32>(_e66)), vec2<f32>(bitcast<f32>(_e73), bitcast<f32>(_e79)));
 }
 
-fn shading_normal(ray_16: Ray, hit_3: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_3.geometric_normal, ray_16.dir, hit_3.geometric_normal);
+fn shading_normal(ray_15: Ray, hit_3: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
     return faceForward(hit_3.normal, -(ng), hit_3.normal);
 }
 
@@ -1269,12 +1266,12 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn blinn_phong_shade(m_1: BlinnPhong, ray_17: Ray, hit_4: Hit) -> vec3<f32> {
+fn blinn_phong_shade(m_1: BlinnPhong, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_17, hit_4);
-    let _e5 = normalize_vec3f(ray_17.dir);
+    let _e3 = shading_normal(ray_16, hit_4);
+    let _e5 = normalize_vec3f(ray_16.dir);
     let v_3 = -(_e5);
     let _e12 = sample_texture(m_1.texture, (hit_4.uv * m_1.uv_scale));
     let kd = (m_1.diffuse * _e12.xyz);
@@ -1311,11 +1308,11 @@ fn load_Lambert(offset_9: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_5: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
     var color_1: vec3<f32>;
     var i_4: u32;
 
-    let _e3 = shading_normal(ray_18, hit_5);
+    let _e3 = shading_normal(ray_17, hit_5);
     color_1 = vec3(0f);
     let _e8 = light_count_query();
     i_4 = 0u;
@@ -1337,7 +1334,7 @@ fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_5: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn mirror_shade(m_3: Mirror, ray_19: Ray, hit_6: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_3: Mirror, ray_18: Ray, hit_6: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -1352,7 +1349,7 @@ fn load_UnlitTexture(offset_10: u32) -> UnlitTexture {
     return UnlitTexture(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec2<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35)), _e42);
 }
 
-fn unlit_texture_shade(m_4: UnlitTexture, ray_20: Ray, hit_7: Hit) -> vec3<f32> {
+fn unlit_texture_shade(m_4: UnlitTexture, ray_19: Ray, hit_7: Hit) -> vec3<f32> {
     var uv_1: vec2<f32>;
 
     uv_1 = hit_7.uv;
@@ -1364,26 +1361,26 @@ fn unlit_texture_shade(m_4: UnlitTexture, ray_20: Ray, hit_7: Hit) -> vec3<f32> 
     return (_e17.xyz * m_4.tint);
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_11: u32, ray_21: Ray, hit_8: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_11: u32, ray_20: Ray, hit_8: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_BlinnPhong(offset_11);
-            let _e6 = blinn_phong_shade(_e5, ray_21, hit_8);
+            let _e6 = blinn_phong_shade(_e5, ray_20, hit_8);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_11);
-            let _e8 = lambert_shade(_e7, ray_21, hit_8);
+            let _e8 = lambert_shade(_e7, ray_20, hit_8);
             return _e8;
         }
         case 2u: {
             let _e9 = load_Mirror(offset_11);
-            let _e10 = mirror_shade(_e9, ray_21, hit_8, secondary_1);
+            let _e10 = mirror_shade(_e9, ray_20, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
             let _e11 = load_UnlitTexture(offset_11);
-            let _e12 = unlit_texture_shade(_e11, ray_21, hit_8);
+            let _e12 = unlit_texture_shade(_e11, ray_20, hit_8);
             return _e12;
         }
         default: {
@@ -1418,25 +1415,25 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     var weight_1: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_22 = s_1.ray;
+    let ray_21 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_3.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_22);
+        let _e14 = miss(ray_21);
         out.radiance = (s_1.radiance + (s_1.beta * _e14));
         let _e17 = out;
         return _e17;
     }
     let inst_8 = instances[c_3.slot];
-    let _e22 = finish_hit(ray_22, c_3);
+    let _e22 = finish_hit(ray_21, c_3);
     let error_4 = hit_error;
     spawned = false;
     dir_6 = vec3(0f);
     weight_1 = vec3(0f);
-    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_22.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_21.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_22, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_21, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1446,7 +1443,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
             weight_1 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e22, vec3(0f));
     out.radiance = (s_1.radiance + (s_1.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1463,7 +1460,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_22.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_21.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
         let survive = (q_4 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1479,7 +1476,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_6;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_22.depth + 1u), RAY_SECONDARY, ray_22.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_21.depth + 1u), RAY_SECONDARY, ray_21.medium);
     out.live = true;
     let _e128 = out;
     return _e128;

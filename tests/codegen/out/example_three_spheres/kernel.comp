@@ -465,7 +465,10 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
+BoxRay box_ray(GpuNode header_1, Ray ray_2) {
+    vec3 origin_2 = header_1.min_;
+    vec3 _e3 = node_frame_hi(header_1);
+    vec3 extent = (_e3 - origin_2);
     float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((floatBitsToUint(m_3) >> 23u) & 255u), 1u), 253u);
     vec3 d_3 = (ray_2.dir * vec3(uintBitsToFloat(((254u - e) << 23u))));
@@ -473,16 +476,10 @@ BoxRay box_ray(vec3 origin_1, vec3 scale_1, vec3 extent, Ray ray_2) {
     vec3 floor_ = vec3(9.094947e-13);
     vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d_3, vec3(0.0)));
     vec3 inv = (vec3(1.0) / mix(d_3, (s_4 * floor_), lessThan(abs(d_3), floor_)));
-    vec3 rel = (origin_1 - ray_2.origin);
+    vec3 rel = (origin_2 - ray_2.origin);
     vec3 start = (rel * inv);
-    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3) {
-    vec3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    return _e7;
+    vec3 pad = (((vec3(9.536743e-7) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion) {
@@ -518,7 +515,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occ
     return (hit_8 ? vec3(t_7, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c) {
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c) {
     return true;
 }
 
@@ -570,7 +567,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -578,10 +575,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     while(true) {
@@ -606,7 +603,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                vec3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                vec3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
@@ -725,24 +722,24 @@ BvhNode mesh_node_query(uint m, uint i_1) {
     return BvhNode(_e73, _e74, (_e75 & NODE_FIRST_MASK), count_2);
 }
 
-vec2 intersect_aabb(Ray ray_6, vec3 min_, vec3 max_) {
-    bvec3 parallel = lessThan(abs(ray_6.dir), vec3(1.1754944e-38));
+vec2 intersect_aabb(Ray ray_5, vec3 min_, vec3 max_) {
+    bvec3 parallel = lessThan(abs(ray_5.dir), vec3(1.1754944e-38));
     vec3 _e12 = vec3(1.0);
-    vec3 inv_dir = (_e12 / mix(ray_6.dir, _e12, parallel));
-    vec3 _e17 = ((min_ - ray_6.origin) * inv_dir);
-    vec3 _e18 = ((max_ - ray_6.origin) * inv_dir);
-    bvec3 _e23 = bvec3(lessThanEqual(min_, ray_6.origin).x && lessThanEqual(ray_6.origin, max_).x, lessThanEqual(min_, ray_6.origin).y && lessThanEqual(ray_6.origin, max_).y, lessThanEqual(min_, ray_6.origin).z && lessThanEqual(ray_6.origin, max_).z);
+    vec3 inv_dir = (_e12 / mix(ray_5.dir, _e12, parallel));
+    vec3 _e17 = ((min_ - ray_5.origin) * inv_dir);
+    vec3 _e18 = ((max_ - ray_5.origin) * inv_dir);
+    bvec3 _e23 = bvec3(lessThanEqual(min_, ray_5.origin).x && lessThanEqual(ray_5.origin, max_).x, lessThanEqual(min_, ray_5.origin).y && lessThanEqual(ray_5.origin, max_).y, lessThanEqual(min_, ray_5.origin).z && lessThanEqual(ray_5.origin, max_).z);
     uint _e25 = F32_INF;
     vec3 _e27 = vec3(uintBitsToFloat(_e25));
     uint _e29 = F32_NEG_INF;
     vec3 _e31 = vec3(uintBitsToFloat(_e29));
     vec3 near_3 = mix(min(_e17, _e18), mix(_e27, _e31, _e23), parallel);
     vec3 far_3 = mix(max(_e17, _e18), mix(_e31, _e27, _e23), parallel);
-    return vec2(max(max(max(near_3.x, near_3.y), near_3.z), ray_6.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_6.tmax));
+    return vec2(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
-float bvh_mesh_enter(Ray ray_7, BvhNode n_1, float tmax_4) {
-    vec2 _e5 = intersect_aabb(ray_7, n_1.min_, n_1.max_);
+float bvh_mesh_enter(Ray ray_6, BvhNode n_1, float tmax_4) {
+    vec2 _e5 = intersect_aabb(ray_6, n_1.min_, n_1.max_);
     uint _e7 = F32_INF;
     return (((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : uintBitsToFloat(_e7));
 }
@@ -756,9 +753,9 @@ Triangle mesh_triangle_query(uint m_1, uint i_2) {
     return Triangle(_e12.xyz, _e20.xyz, _e28.xyz);
 }
 
-Intersection intersect_triangle(Ray ray_8, Triangle tri) {
+Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     uvec3 _e10 = uvec3(2139095040u);
-    vec3 dir_5 = mix(ray_8.dir, vec3(0.0), lessThan(abs(ray_8.dir), vec3(1.1754944e-38)));
+    vec3 dir_5 = mix(ray_7.dir, vec3(0.0), lessThan(abs(ray_7.dir), vec3(1.1754944e-38)));
     vec3 _e31 = abs(dir_5);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
@@ -771,13 +768,13 @@ Intersection intersect_triangle(Ray ray_8, Triangle tri) {
     float sx = (dir_5[kx_1] / dz_1);
     float sy = (dir_5[ky_1] / dz_1);
     float sz = (1.0 / dz_1);
-    vec3 _e62 = (tri.v0_ - ray_8.origin);
+    vec3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
     float _e69 = (_e62[ky_1] - (sy * _e62[kz_1]));
-    vec3 _e71 = (tri.v1_ - ray_8.origin);
+    vec3 _e71 = (tri.v1_ - ray_7.origin);
     float _e77 = (_e71[kx_1] - (sx * _e71[kz_1]));
     float _e78 = (_e71[ky_1] - (sy * _e71[kz_1]));
-    vec3 _e80 = (tri.v2_ - ray_8.origin);
+    vec3 _e80 = (tri.v2_ - ray_7.origin);
     float _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     float _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -786,13 +783,13 @@ Intersection intersect_triangle(Ray ray_8, Triangle tri) {
     float det_1 = ((u_1 + v_3) + w_1);
     float _e112 = (1.0 / det_1);
     float t_9 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_9 = (((((all(lessThan((floatBitsToUint(ray_8.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_8.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_8.tmin) && (t_9 <= ray_8.tmax)));
+    bool hit_9 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
     return Intersection((hit_9 ? t_9 : uintBitsToFloat(_e137)), (hit_9 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_9 ? vec2((v_3 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
-Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_9) {
+Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8) {
     Intersection best_1 = Intersection(0.0, vec3(0.0), vec2(0.0));
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
@@ -803,7 +800,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_9) {
     bool found = false;
     uint _e3 = F32_INF;
     best_1 = Intersection(uintBitsToFloat(_e3), vec3(0.0, 0.0, 1.0), vec2(0.0));
-    r_2 = ray_9;
+    r_2 = ray_8;
     stack = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     stack_t = float[64](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     sp_2 = 0u;
@@ -910,12 +907,12 @@ Sphere load_Sphere(uint offset_3) {
     return Sphere(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24));
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_10) {
+Intersection sphere_intersect(Sphere s, Ray ray_9) {
     float t = 0.0;
-    vec3 f_2 = (ray_10.origin - s.center);
-    float a_6 = dot(ray_10.dir, ray_10.dir);
-    float b_9 = -(dot(f_2, ray_10.dir));
-    vec3 l_1 = (f_2 + (ray_10.dir * vec3((b_9 / a_6))));
+    vec3 f_2 = (ray_9.origin - s.center);
+    float a_6 = dot(ray_9.dir, ray_9.dir);
+    float b_9 = -(dot(f_2, ray_9.dir));
+    vec3 l_1 = (f_2 + (ray_9.dir * vec3((b_9 / a_6))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
@@ -927,33 +924,33 @@ Intersection sphere_intersect(Sphere s, Ray ray_10) {
     float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_10.tmin))) {
+    if (!((_e52 >= ray_9.tmin))) {
         t = max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_10.tmin) && (_e60 <= ray_10.tmax)))) {
+    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float _e76 = t;
-    vec3 _e82 = normalize_vec3f(((ray_10.origin + (ray_10.dir * vec3(_e76))) - s.center));
+    vec3 _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * vec3(_e76))) - s.center));
     float u_2 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv_1 = vec2(u_2, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
     return Intersection(_e109, _e82, uv_1);
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_11) {
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_10) {
     switch(type_id_1) {
         case 0u: {
             BvhMesh _e3 = load_BvhMesh(offset_4);
-            Intersection _e4 = bvh_mesh_intersect(_e3, ray_11);
+            Intersection _e4 = bvh_mesh_intersect(_e3, ray_10);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4);
-            Intersection _e6 = sphere_intersect(_e5, ray_11);
+            Intersection _e6 = sphere_intersect(_e5, ray_10);
             return _e6;
         }
         default: {
@@ -963,15 +960,15 @@ Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_11) {
     return Intersection(0.0, vec3(0.0), vec2(0.0));
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_12, Candidate best_2, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_11, Candidate best_2, bool shadow_1) {
     Ray r_3 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_6, ray_12);
+    Ray _e7 = to_object(inst_6, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_3;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_12, _e14, best_2, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1);
         return _e15;
     }
     Ray _e18 = r_3;
@@ -981,7 +978,7 @@ Candidate intersect_object(uint slot_2, Ray ray_12, Candidate best_2, bool shado
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
         Candidate c_8 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        bool _e40 = accept(inst_6, ray_12, c_8);
+        bool _e40 = accept(inst_6, ray_11, c_8);
         if (_e40) {
             return c_8;
         }
@@ -989,8 +986,8 @@ Candidate intersect_object(uint slot_2, Ray ray_12, Candidate best_2, bool shado
     return best_2;
 }
 
-float point_error(vec3 origin_2, vec3 along) {
-    vec3 a_7 = (abs(origin_2) + abs(along));
+float point_error(vec3 origin_1, vec3 along) {
+    vec3 a_7 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_7.x, a_7.y), a_7.z));
 }
 
@@ -1042,14 +1039,14 @@ vec3 normal_to_world(GpuInstance inst_5, vec3 n_3) {
     return _e19;
 }
 
-Hit finish_hit(Ray ray_13, Candidate c_1) {
+Hit finish_hit(Ray ray_12, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_13.origin, (ray_13.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_12.origin, (ray_12.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_13.origin + (ray_13.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_12.origin + (ray_12.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -1090,7 +1087,7 @@ Hit finish_hit(Ray ray_13, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_13.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_12.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -1143,17 +1140,17 @@ uint medium_at(vec3 p_4, uint exclude) {
 }
 
 Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
-    Ray ray_14 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_13 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    vec3 _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    vec3 _e15 = ray_13.origin;
     uint _e17 = medium_at(_e15, NO_HIT);
-    ray_14.medium = _e17;
-    Ray _e18 = ray_14;
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
     return _e18;
 }
 
@@ -1161,7 +1158,7 @@ vec3 node_frame_bounds() {
     return vec3(65535.0);
 }
 
-Candidate intersect_scene(Ray ray_15, bool shadow_2) {
+Candidate intersect_scene(Ray ray_14, bool shadow_2) {
     Candidate best_3 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_3 = 0u;
     uint child_1 = 0u;
@@ -1169,7 +1166,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_15.tmax);
+    Candidate _e7 = no_candidate(ray_14.tmax);
     best_3 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
@@ -1178,7 +1175,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2) {
     }
     uint base_3 = frame_3.tlas_root;
     GpuNode header_4 = _group_0_binding_2_cs[base_3];
-    BoxRay _e19 = header_box_ray(header_4, ray_15);
+    BoxRay _e19 = box_ray(header_4, ray_14);
     vec3 _e22 = node_frame_bounds();
     float _e24 = best_3.t;
     float _e27 = slab_in_frame(vec3(0.0), _e22, _e19, (_e24 * _e19.unit));
@@ -1196,7 +1193,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2) {
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_3;
-                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_14, _e54, shadow_2);
                 best_3 = _e55;
                 uint _e57 = best_3.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1359,8 +1356,8 @@ vec4 sample_texture(uint t_2, vec2 uv) {
     return mix(a_8, b_11, vec4(fr.y));
 }
 
-vec3 skybox(Skybox b_7, Ray ray_16) {
-    vec3 _e3 = normalize_vec3f(ray_16.dir);
+vec3 skybox(Skybox b_7, Ray ray_15) {
+    vec3 _e3 = normalize_vec3f(ray_15.dir);
     bool pole = ((_e3.x == 0.0) && (_e3.z == 0.0));
     float longitude = ((pole ? 0.0 : atan(_e3.x, -(_e3.z))) - radians(b_7.rotation));
     float latitude = acos(min(max(_e3.y, -1.0), 1.0));
@@ -1369,18 +1366,18 @@ vec3 skybox(Skybox b_7, Ray ray_16) {
     return (_e34.xyz * vec3(b_7.intensity));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_17) {
+vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_16) {
     Skybox _e2 = load_Skybox(offset_6);
-    vec3 _e3 = skybox(_e2, ray_17);
+    vec3 _e3 = skybox(_e2, ray_16);
     return _e3;
 }
 
-vec3 miss(Ray ray_18) {
+vec3 miss(Ray ray_17) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
@@ -1391,8 +1388,8 @@ Lambert load_Lambert(uint offset_7) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 shading_normal(Ray ray_19, Hit hit_1) {
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+vec3 shading_normal(Ray ray_18, Hit hit_1) {
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1512,10 +1509,10 @@ LightSample sample_light_query(uint i_4, vec3 position_4, vec3 normal_5) {
     return _e28;
 }
 
-vec3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2) {
+vec3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_2) {
     vec3 color = vec3(0.0);
     uint i_5 = 0u;
-    vec3 _e3 = shading_normal(ray_20, hit_2);
+    vec3 _e3 = shading_normal(ray_19, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_5 = 0u;
@@ -1539,39 +1536,39 @@ vec3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2) {
     return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_21, Hit hit_3, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_3, vec3 secondary) {
     Lambert _e3 = load_Lambert(offset_10);
-    vec3 _e4 = lambert_shade(_e3, ray_21, hit_3);
+    vec3 _e4 = lambert_shade(_e3, ray_20, hit_3);
     return _e4;
 }
 
-vec3 shade_direct(Ray ray_22, Candidate c_3) {
+vec3 shade_direct(Ray ray_21, Candidate c_3) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e6 = finish_hit(ray_22, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_21, c_3);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_23, float t_3, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_22, float t_3, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_24, float t_4, vec3 radiance_1) {
+vec3 through_medium(Ray ray_23, float t_4, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_24.medium == 0u)) {
+    if ((ray_23.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_24.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_23.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_4, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_25, Hit hit_4) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_24, Hit hit_4) {
     return;
 }
 
@@ -1598,7 +1595,7 @@ vec3 trace(Ray camera_ray) {
     float t_5 = 0.0;
     Frame stack_1[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_26 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1636,7 +1633,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack_1 = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_25 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1652,10 +1649,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_26;
+            Ray _e67 = ray_25;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_26;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1789,7 +1786,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_10, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_25 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;

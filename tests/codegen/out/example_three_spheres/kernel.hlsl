@@ -512,16 +512,16 @@ Ray supersampled_ray(SupersampledPinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e58 = normalize_vec3f(((_e34 + (_e37 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e62 = F32_INF;
-    const Ray ray_27 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
-    return ray_27;
+    const Ray ray_26 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
+    return ray_26;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1);
     const Ray _e4 = supersampled_ray(_e3, pixel_3, sample_3);
-    const Ray ray_28 = _e4;
-    return ray_28;
+    const Ray ray_27 = _e4;
+    return ray_27;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -550,8 +550,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_29 = _e25;
-    return ray_29;
+    const Ray ray_28 = _e25;
+    return ray_28;
 }
 
 TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
@@ -604,8 +604,11 @@ BoxRay ConstructBoxRay(float3 arg0, float3 arg1, float3 arg2, float arg3, float 
     return ret;
 }
 
-BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
+BoxRay box_ray(GpuNode header_1, Ray ray_2)
 {
+    float3 origin_2 = header_1.min_;
+    const float3 _e3 = node_frame_hi(header_1);
+    float3 extent = (_e3 - origin_2);
     float m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     uint e = min(max(((asuint(m_3) >> 23u) & 255u), 1u), 253u);
     float3 d_3 = (ray_2.dir * (asfloat(((254u - e) << 23u))).xxx);
@@ -613,19 +616,11 @@ BoxRay box_ray(float3 origin_1, float3 scale_1, float3 extent, Ray ray_2)
     float3 floor_ = (9.094947e-13).xxx;
     float3 s_4 = ((d_3 < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
     float3 inv = ((1.0).xxx / ((abs(d_3) < floor_) ? (s_4 * floor_) : d_3));
-    float3 rel = (origin_1 - ray_2.origin);
+    float3 rel = (origin_2 - ray_2.origin);
     float3 start = (rel * inv);
-    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    const BoxRay boxray = ConstructBoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
+    float3 pad = ((((9.536743e-7).xxx * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    const BoxRay boxray = ConstructBoxRay((header_1.max_ * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
     return boxray;
-}
-
-BoxRay header_box_ray(GpuNode header_1, Ray ray_3)
-{
-    const float3 _e4 = node_frame_hi(header_1);
-    const BoxRay _e7 = box_ray(header_1.min_, header_1.max_, (_e4 - header_1.min_), ray_3);
-    const BoxRay boxray_1 = _e7;
-    return boxray_1;
 }
 
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool occlusion)
@@ -662,7 +657,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1, bool o
     return (hit_8 ? float3(t_7, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e202), 0.0, 0.0));
 }
 
-bool accept(GpuInstance inst_1, Ray ray_4, Candidate c)
+bool accept(GpuInstance inst_1, Ray ray_3, Candidate c)
 {
     return true;
 }
@@ -729,7 +724,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_5, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -739,10 +734,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    const TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    const BoxRay _e12 = header_box_ray(header_2, ray_5);
+    const BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -773,7 +768,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e38 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e38);
                 float _e42 = best.t;
-                const float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                const float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
@@ -916,26 +911,26 @@ BvhNode mesh_node_query(uint m, uint i_1)
     return bvhnode_2;
 }
 
-float2 intersect_aabb(Ray ray_6, float3 min_, float3 max_)
+float2 intersect_aabb(Ray ray_5, float3 min_, float3 max_)
 {
-    bool3 parallel = (abs(ray_6.dir) < (1.1754944e-38).xxx);
+    bool3 parallel = (abs(ray_5.dir) < (1.1754944e-38).xxx);
     float3 _e12 = (1.0).xxx;
-    float3 inv_dir = (_e12 / (parallel ? _e12 : ray_6.dir));
-    float3 _e17 = ((min_ - ray_6.origin) * inv_dir);
-    float3 _e18 = ((max_ - ray_6.origin) * inv_dir);
-    bool3 _e23 = ((min_ <= ray_6.origin) & (ray_6.origin <= max_));
+    float3 inv_dir = (_e12 / (parallel ? _e12 : ray_5.dir));
+    float3 _e17 = ((min_ - ray_5.origin) * inv_dir);
+    float3 _e18 = ((max_ - ray_5.origin) * inv_dir);
+    bool3 _e23 = ((min_ <= ray_5.origin) & (ray_5.origin <= max_));
     uint _e25 = F32_INF;
     float3 _e27 = (asfloat(_e25)).xxx;
     uint _e29 = F32_NEG_INF;
     float3 _e31 = (asfloat(_e29)).xxx;
     float3 near_3 = (parallel ? (_e23 ? _e31 : _e27) : min(_e17, _e18));
     float3 far_3 = (parallel ? (_e23 ? _e27 : _e31) : max(_e17, _e18));
-    return float2(max(max(max(near_3.x, near_3.y), near_3.z), ray_6.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_6.tmax));
+    return float2(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
-float bvh_mesh_enter(Ray ray_7, BvhNode n_1, float tmax_4)
+float bvh_mesh_enter(Ray ray_6, BvhNode n_1, float tmax_4)
 {
-    const float2 _e5 = intersect_aabb(ray_7, n_1.min_, n_1.max_);
+    const float2 _e5 = intersect_aabb(ray_6, n_1.min_, n_1.max_);
     uint _e7 = F32_INF;
     return (((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : asfloat(_e7));
 }
@@ -967,10 +962,10 @@ Intersection ConstructIntersection(float arg0, float3 arg1, float2 arg2) {
     return ret;
 }
 
-Intersection intersect_triangle(Ray ray_8, Triangle tri)
+Intersection intersect_triangle(Ray ray_7, Triangle tri)
 {
     uint3 _e10 = (2139095040u).xxx;
-    float3 dir_5 = ((abs(ray_8.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_8.dir);
+    float3 dir_5 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
     float3 _e31 = abs(dir_5);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
@@ -983,13 +978,13 @@ Intersection intersect_triangle(Ray ray_8, Triangle tri)
     float sx = (dir_5[min(uint(kx_1), 2u)] / dz_1);
     float sy = (dir_5[min(uint(ky_1), 2u)] / dz_1);
     float sz = (1.0 / dz_1);
-    float3 _e62 = (tri.v0_ - ray_8.origin);
+    float3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[min(uint(kx_1), 2u)] - (sx * _e62[min(uint(kz_1), 2u)]));
     float _e69 = (_e62[min(uint(ky_1), 2u)] - (sy * _e62[min(uint(kz_1), 2u)]));
-    float3 _e71 = (tri.v1_ - ray_8.origin);
+    float3 _e71 = (tri.v1_ - ray_7.origin);
     float _e77 = (_e71[min(uint(kx_1), 2u)] - (sx * _e71[min(uint(kz_1), 2u)]));
     float _e78 = (_e71[min(uint(ky_1), 2u)] - (sy * _e71[min(uint(kz_1), 2u)]));
-    float3 _e80 = (tri.v2_ - ray_8.origin);
+    float3 _e80 = (tri.v2_ - ray_7.origin);
     float _e86 = (_e80[min(uint(kx_1), 2u)] - (sx * _e80[min(uint(kz_1), 2u)]));
     float _e87 = (_e80[min(uint(ky_1), 2u)] - (sy * _e80[min(uint(kz_1), 2u)]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -998,7 +993,7 @@ Intersection intersect_triangle(Ray ray_8, Triangle tri)
     float det_1 = ((u_1 + v_3) + w_1);
     float _e112 = (1.0 / det_1);
     float t_9 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_3 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_9 = (((((all(((asuint(ray_8.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_8.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_8.tmin) && (t_9 <= ray_8.tmax)));
+    bool hit_9 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
     const Intersection intersection = ConstructIntersection((hit_9 ? t_9 : asfloat(_e137)), (hit_9 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_9 ? float2((v_3 * _e112), (w_1 * _e112)) : (0.0).xx));
@@ -1019,7 +1014,7 @@ ret_ZeroValuearray64_float_ ZeroValuearray64_float_() {
     return (float[64])0;
 }
 
-Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_9)
+Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8)
 {
     Intersection best_1 = (Intersection)0;
     Ray r_2 = (Ray)0;
@@ -1032,7 +1027,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_9)
 
     uint _e3 = F32_INF;
     best_1 = ConstructIntersection(asfloat(_e3), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
-    r_2 = ray_9;
+    r_2 = ray_8;
     stack = ZeroValuearray64_uint_();
     stack_t = ZeroValuearray64_float_();
     sp_2 = 0u;
@@ -1159,14 +1154,14 @@ Sphere load_Sphere(uint offset_3)
     return sphere;
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_10)
+Intersection sphere_intersect(Sphere s, Ray ray_9)
 {
     float t = (float)0;
 
-    float3 f_2 = (ray_10.origin - s.center_);
-    float a_6 = dot(ray_10.dir, ray_10.dir);
-    float b_9 = -(dot(f_2, ray_10.dir));
-    float3 l_1 = (f_2 + (ray_10.dir * ((b_9 / a_6)).xxx));
+    float3 f_2 = (ray_9.origin - s.center_);
+    float a_6 = dot(ray_9.dir, ray_9.dir);
+    float b_9 = -(dot(f_2, ray_9.dir));
+    float3 l_1 = (f_2 + (ray_9.dir * ((b_9 / a_6)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
@@ -1179,18 +1174,18 @@ Intersection sphere_intersect(Sphere s, Ray ray_10)
     float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_10.tmin))) {
+    if (!((_e52 >= ray_9.tmin))) {
         t = max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_10.tmin) && (_e60 <= ray_10.tmax)))) {
+    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_4 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_4;
     }
     float _e76 = t;
-    const float3 _e82 = normalize_vec3f(((ray_10.origin + (ray_10.dir * (_e76).xxx)) - s.center_));
+    const float3 _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * (_e76).xxx)) - s.center_));
     float u_2 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv_1 = float2(u_2, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
@@ -1202,18 +1197,18 @@ Intersection ZeroValueIntersection() {
     return (Intersection)0;
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_11)
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_10)
 {
     switch(type_id_1) {
         case 0u: {
             const BvhMesh _e3 = load_BvhMesh(offset_4);
-            const Intersection _e4 = bvh_mesh_intersect(_e3, ray_11);
+            const Intersection _e4 = bvh_mesh_intersect(_e3, ray_10);
             const Intersection intersection_6 = _e4;
             return intersection_6;
         }
         case 1u: {
             const Sphere _e5 = load_Sphere(offset_4);
-            const Intersection _e6 = sphere_intersect(_e5, ray_11);
+            const Intersection _e6 = sphere_intersect(_e5, ray_10);
             const Intersection intersection_7 = _e6;
             return intersection_7;
         }
@@ -1244,17 +1239,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_12, Candidate best_2, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_11, Candidate best_2, bool shadow_1)
 {
     Ray r_3 = (Ray)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_6, ray_12);
+    const Ray _e7 = to_object(inst_6, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_3;
-        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_12, _e14, best_2, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1265,7 +1260,7 @@ Candidate intersect_object(uint slot_2, Ray ray_12, Candidate best_2, bool shado
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
         Candidate c_8 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_12, c_8);
+        const bool _e40 = accept(inst_6, ray_11, c_8);
         if (_e40) {
             const Candidate candidate_4 = c_8;
             return candidate_4;
@@ -1275,9 +1270,9 @@ Candidate intersect_object(uint slot_2, Ray ray_12, Candidate best_2, bool shado
     return candidate_5;
 }
 
-float point_error(float3 origin_2, float3 along)
+float point_error(float3 origin_1, float3 along)
 {
-    float3 a_7 = (abs(origin_2) + abs(along));
+    float3 a_7 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_7.x, a_7.y), a_7.z));
 }
 
@@ -1349,16 +1344,16 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_13, Candidate c_1)
+Hit finish_hit(Ray ray_12, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_13.origin, (ray_13.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_12.origin, (ray_12.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_13.origin + (ray_13.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_12.origin + (ray_12.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -1402,7 +1397,7 @@ Hit finish_hit(Ray ray_13, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_13.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_12.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_10 = _e151;
     return hit_10;
@@ -1462,20 +1457,20 @@ uint medium_at(float3 p_4, uint exclude)
 
 Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
 {
-    Ray ray_14 = (Ray)0;
+    Ray ray_13 = (Ray)0;
 
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    float3 _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    float3 _e15 = ray_13.origin;
     const uint _e17 = medium_at(_e15, NO_HIT);
-    ray_14.medium = _e17;
-    Ray _e18 = ray_14;
-    const Ray ray_30 = _e18;
-    return ray_30;
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
+    const Ray ray_29 = _e18;
+    return ray_29;
 }
 
 float3 node_frame_bounds()
@@ -1483,7 +1478,7 @@ float3 node_frame_bounds()
     return (65535.0).xxx;
 }
 
-Candidate intersect_scene(Ray ray_15, bool shadow_2)
+Candidate intersect_scene(Ray ray_14, bool shadow_2)
 {
     Candidate best_3 = (Candidate)0;
     uint sp_3 = (uint)0;
@@ -1493,7 +1488,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_15.tmax);
+    const Candidate _e7 = no_candidate(ray_14.tmax);
     best_3 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1503,7 +1498,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2)
     }
     uint base_3 = frame_3.tlas_root;
     GpuNode header_4 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
-    const BoxRay _e19 = header_box_ray(header_4, ray_15);
+    const BoxRay _e19 = box_ray(header_4, ray_14);
     const float3 _e22 = node_frame_bounds();
     float _e24 = best_3.t;
     const float _e27 = slab_in_frame((0.0).xxx, _e22, _e19, (_e24 * _e19.unit));
@@ -1525,7 +1520,7 @@ Candidate intersect_scene(Ray ray_15, bool shadow_2)
             if ((((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_3;
-                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                const Candidate _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_14, _e54, shadow_2);
                 best_3 = _e55;
                 uint _e57 = best_3.slot;
                 if ((shadow_2 && (_e57 != NO_HIT))) {
@@ -1715,9 +1710,9 @@ float4 sample_texture(uint t_2, float2 uv)
     return lerp(a_8, b_11, (fr.y).xxxx);
 }
 
-float3 skybox(Skybox b_7, Ray ray_16)
+float3 skybox(Skybox b_7, Ray ray_15)
 {
-    const float3 _e3 = normalize_vec3f(ray_16.dir);
+    const float3 _e3 = normalize_vec3f(ray_15.dir);
     bool pole = ((_e3.x == 0.0) && (_e3.z == 0.0));
     float longitude = ((pole ? 0.0 : atan2(_e3.x, -(_e3.z))) - radians(b_7.rotation));
     float latitude = acos(min(max(_e3.y, -1.0), 1.0));
@@ -1726,20 +1721,20 @@ float3 skybox(Skybox b_7, Ray ray_16)
     return (_e34.xyz * (b_7.intensity).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_17)
+float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_16)
 {
     const Skybox _e2 = load_Skybox(offset_6);
-    const float3 _e3 = skybox(_e2, ray_17);
+    const float3 _e3 = skybox(_e2, ray_16);
     return _e3;
 }
 
-float3 miss(Ray ray_18)
+float3 miss(Ray ray_17)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
@@ -1758,9 +1753,9 @@ Lambert load_Lambert(uint offset_7)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_19, Hit hit_1)
+float3 shading_normal(Ray ray_18, Hit hit_1)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1852,8 +1847,8 @@ Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
         tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd)));
     }
     float _e59 = tmax_5;
-    const Ray ray_31 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_31;
+    const Ray ray_30 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_30;
 }
 
 float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
@@ -1917,12 +1912,12 @@ LightSample sample_light_query(uint i_4, float3 position_4, float3 normal_5)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2)
+float3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_5 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_20, hit_2);
+    const float3 _e3 = shading_normal(ray_19, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_5 = 0u;
@@ -1949,18 +1944,18 @@ float3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_21, Hit hit_3, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_10);
-    const float3 _e4 = lambert_shade(_e3, ray_21, hit_3);
+    const float3 _e4 = lambert_shade(_e3, ray_20, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_22, Candidate c_3)
+float3 shade_direct(Ray ray_21, Candidate c_3)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_22, c_3);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_21, c_3);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, (0.0).xxx);
     return _e11;
 }
 
@@ -1968,28 +1963,28 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_23, float t_3, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_22, float t_3, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_24, float t_4, float3 radiance_1)
+float3 through_medium(Ray ray_23, float t_4, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_24.medium == 0u)) {
+    if ((ray_23.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_24.medium - 1u)*128+0)), asfloat(instances.Load4((ray_24.medium - 1u)*128+16)), asfloat(instances.Load4((ray_24.medium - 1u)*128+32)), asfloat(instances.Load4((ray_24.medium - 1u)*128+48)), asfloat(instances.Load4((ray_24.medium - 1u)*128+64)), asfloat(instances.Load4((ray_24.medium - 1u)*128+80)), asuint(instances.Load((ray_24.medium - 1u)*128+96)), asuint(instances.Load((ray_24.medium - 1u)*128+100)), asuint(instances.Load((ray_24.medium - 1u)*128+104)), asuint(instances.Load((ray_24.medium - 1u)*128+108)), asuint(instances.Load((ray_24.medium - 1u)*128+112)), asuint(instances.Load((ray_24.medium - 1u)*128+116)), asuint(instances.Load((ray_24.medium - 1u)*128+120)), asuint(instances.Load((ray_24.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_23.medium - 1u)*128+0)), asfloat(instances.Load4((ray_23.medium - 1u)*128+16)), asfloat(instances.Load4((ray_23.medium - 1u)*128+32)), asfloat(instances.Load4((ray_23.medium - 1u)*128+48)), asfloat(instances.Load4((ray_23.medium - 1u)*128+64)), asfloat(instances.Load4((ray_23.medium - 1u)*128+80)), asuint(instances.Load((ray_23.medium - 1u)*128+96)), asuint(instances.Load((ray_23.medium - 1u)*128+100)), asuint(instances.Load((ray_23.medium - 1u)*128+104)), asuint(instances.Load((ray_23.medium - 1u)*128+108)), asuint(instances.Load((ray_23.medium - 1u)*128+112)), asuint(instances.Load((ray_23.medium - 1u)*128+116)), asuint(instances.Load((ray_23.medium - 1u)*128+120)), asuint(instances.Load((ray_23.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_4, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_25, Hit hit_4)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_24, Hit hit_4)
 {
     return;
 }
@@ -2045,7 +2040,7 @@ float3 trace(Ray camera_ray)
     float t_5 = (float)0;
     Frame stack_1[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_26 = (Ray)0;
+    Ray ray_25 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -2084,7 +2079,7 @@ float3 trace(Ray camera_ray)
     }
     stack_1 = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_25 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -2103,10 +2098,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_26;
+            Ray _e67 = ray_25;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_26;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -2243,7 +2238,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_11, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_25 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

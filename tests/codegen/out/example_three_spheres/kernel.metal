@@ -572,11 +572,12 @@ metal::float3 node_frame_hi(
 }
 
 BoxRay box_ray(
-    metal::float3 origin_1,
-    metal::float3 scale_1,
-    metal::float3 extent,
+    GpuNode header_1,
     Ray ray_2
 ) {
+    metal::float3 origin_2 = header_1.min;
+    metal::float3 _e3 = node_frame_hi(header_1);
+    metal::float3 extent = _e3 - origin_2;
     float m_3 = metal::max(metal::max(metal::abs(ray_2.dir[0]), metal::abs(ray_2.dir[1])), metal::abs(ray_2.dir[2]));
     uint e = metal::min(metal::max((as_type<uint>(m_3) >> 23u) & 255u, 1u), 253u);
     metal::float3 d_3 = ray_2.dir * metal::float3(as_type<float>((254u - e) << 23u));
@@ -584,19 +585,10 @@ BoxRay box_ray(
     metal::float3 floor = metal::float3(0.0000000000009094947);
     metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d_3 < metal::float3(0.0));
     metal::float3 inv = metal::float3(1.0) / metal::select(d_3, s_4 * floor, metal::abs(d_3) < floor);
-    metal::float3 rel = origin_1 - ray_2.origin;
+    metal::float3 rel = origin_2 - ray_2.origin;
     metal::float3 start = rel * inv;
-    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_1))) * s_4;
-    return BoxRay {scale_1 * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
-}
-
-BoxRay header_box_ray(
-    GpuNode header_1,
-    Ray ray_3
-) {
-    metal::float3 _e4 = node_frame_hi(header_1);
-    BoxRay _e7 = box_ray(header_1.min, header_1.max, _e4 - header_1.min, ray_3);
-    return _e7;
+    metal::float3 pad = ((metal::float3(0.0000009536743) * metal::abs(inv)) * ((extent + metal::abs(rel)) + metal::abs(origin_2))) * s_4;
+    return BoxRay {header_1.max * inv, start - pad, start + pad, ray_2.tmin * unit, unit};
 }
 
 metal::float3 hit_triangle(
@@ -643,7 +635,7 @@ metal::float3 hit_triangle(
 
 bool accept(
     GpuInstance inst_1,
-    Ray ray_4,
+    Ray ray_3,
     Candidate c
 ) {
     return true;
@@ -720,7 +712,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_5,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -736,10 +728,10 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    TriangleRay _e7 = prepare_triangle_ray(ray_5);
+    TriangleRay _e7 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_2 = nodes[base_1];
-    BoxRay _e12 = header_box_ray(header_2, ray_5);
+    BoxRay _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -770,7 +762,7 @@ Candidate intersect_mesh(
                 uint _e38 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e38;
                 float _e42 = best.t;
-                metal::float3 _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, shadow && !(HAS_ANY_HIT), F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
@@ -900,35 +892,35 @@ BvhNode mesh_node_query(
 }
 
 metal::float2 intersect_aabb(
-    Ray ray_6,
+    Ray ray_5,
     metal::float3 min,
     metal::float3 max,
     thread uint& F32_INF,
     thread uint& F32_NEG_INF
 ) {
-    metal::bool3 parallel = metal::abs(ray_6.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::bool3 parallel = metal::abs(ray_5.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
     metal::float3 _e12 = metal::float3(1.0);
-    metal::float3 inv_dir = _e12 / metal::select(ray_6.dir, _e12, parallel);
-    metal::float3 _e17 = (min - ray_6.origin) * inv_dir;
-    metal::float3 _e18 = (max - ray_6.origin) * inv_dir;
-    metal::bool3 _e23 = (min <= ray_6.origin) & (ray_6.origin <= max);
+    metal::float3 inv_dir = _e12 / metal::select(ray_5.dir, _e12, parallel);
+    metal::float3 _e17 = (min - ray_5.origin) * inv_dir;
+    metal::float3 _e18 = (max - ray_5.origin) * inv_dir;
+    metal::bool3 _e23 = (min <= ray_5.origin) & (ray_5.origin <= max);
     uint _e25 = F32_INF;
     metal::float3 _e27 = metal::float3(as_type<float>(_e25));
     uint _e29 = F32_NEG_INF;
     metal::float3 _e31 = metal::float3(as_type<float>(_e29));
     metal::float3 near_3 = metal::select(metal::min(_e17, _e18), metal::select(_e27, _e31, _e23), parallel);
     metal::float3 far_3 = metal::select(metal::max(_e17, _e18), metal::select(_e31, _e27, _e23), parallel);
-    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_6.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_6.tmax));
+    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_5.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
 float bvh_mesh_enter(
-    Ray ray_7,
+    Ray ray_6,
     BvhNode n_1,
     float tmax_4,
     thread uint& F32_INF,
     thread uint& F32_NEG_INF
 ) {
-    metal::float2 _e5 = intersect_aabb(ray_7, n_1.min, n_1.max, F32_INF, F32_NEG_INF);
+    metal::float2 _e5 = intersect_aabb(ray_6, n_1.min, n_1.max, F32_INF, F32_NEG_INF);
     uint _e7 = F32_INF;
     return ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : as_type<float>(_e7);
 }
@@ -949,12 +941,12 @@ Triangle mesh_triangle_query(
 }
 
 Intersection intersect_triangle(
-    Ray ray_8,
+    Ray ray_7,
     Triangle tri,
     thread uint& F32_INF
 ) {
     metal::uint3 _e10 = metal::uint3(2139095040u);
-    metal::float3 dir_5 = metal::select(ray_8.dir, metal::float3(0.0), metal::abs(ray_8.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 dir_5 = metal::select(ray_7.dir, metal::float3(0.0), metal::abs(ray_7.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
     metal::float3 _e31 = metal::abs(dir_5);
     bool _e38 = _e31.y > _e31.x;
     uint kz_1 = (_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u);
@@ -967,13 +959,13 @@ Intersection intersect_triangle(
     float sx = dir_5[kx_1] / dz_1;
     float sy = dir_5[ky_1] / dz_1;
     float sz = 1.0 / dz_1;
-    metal::float3 _e62 = tri.v0_ - ray_8.origin;
+    metal::float3 _e62 = tri.v0_ - ray_7.origin;
     float _e68 = _e62[kx_1] - (sx * _e62[kz_1]);
     float _e69 = _e62[ky_1] - (sy * _e62[kz_1]);
-    metal::float3 _e71 = tri.v1_ - ray_8.origin;
+    metal::float3 _e71 = tri.v1_ - ray_7.origin;
     float _e77 = _e71[kx_1] - (sx * _e71[kz_1]);
     float _e78 = _e71[ky_1] - (sy * _e71[kz_1]);
-    metal::float3 _e80 = tri.v2_ - ray_8.origin;
+    metal::float3 _e80 = tri.v2_ - ray_7.origin;
     float _e86 = _e80[kx_1] - (sx * _e80[kz_1]);
     float _e87 = _e80[ky_1] - (sy * _e80[kz_1]);
     float u_1 = (_e86 * _e78) - (_e87 * _e77);
@@ -982,7 +974,7 @@ Intersection intersect_triangle(
     float det_1 = (u_1 + v_3) + w_1;
     float _e112 = 1.0 / det_1;
     float t_9 = (((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
-    bool hit_9 = ((((metal::all((as_type<metal::uint3>(ray_8.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_8.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_8.tmin) && (t_9 <= ray_8.tmax));
+    bool hit_9 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax));
     metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
     uint _e137 = F32_INF;
     return Intersection {hit_9 ? t_9 : as_type<float>(_e137), {}, hit_9 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_9 ? metal::float2(v_3 * _e112, w_1 * _e112) : metal::float2(0.0)};
@@ -990,7 +982,7 @@ Intersection intersect_triangle(
 
 Intersection bvh_mesh_intersect(
     BvhMesh g,
-    Ray ray_9,
+    Ray ray_8,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_10 const& nodes,
@@ -1008,7 +1000,7 @@ Intersection bvh_mesh_intersect(
     bool found = {};
     uint _e3 = F32_INF;
     best_1 = Intersection {as_type<float>(_e3), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
-    r_2 = ray_9;
+    r_2 = ray_8;
     stack = type_14 {};
     stack_t = type_15 {};
     sp_2 = 0u;
@@ -1130,14 +1122,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_10,
+    Ray ray_9,
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f_2 = ray_10.origin - s.center;
-    float a_6 = metal::dot(ray_10.dir, ray_10.dir);
-    float b_9 = -(metal::dot(f_2, ray_10.dir));
-    metal::float3 l_1 = f_2 + (ray_10.dir * metal::float3(b_9 / a_6));
+    metal::float3 f_2 = ray_9.origin - s.center;
+    float a_6 = metal::dot(ray_9.dir, ray_9.dir);
+    float b_9 = -(metal::dot(f_2, ray_9.dir));
+    metal::float3 l_1 = f_2 + (ray_9.dir * metal::float3(b_9 / a_6));
     float r2_ = s.radius * s.radius;
     float disc = a_6 * (r2_ - metal::dot(l_1, l_1));
     if (!((disc >= 0.0)) || !((a_6 > 0.0))) {
@@ -1149,17 +1141,17 @@ Intersection sphere_intersect(
     float t1_1 = q_2 / a_6;
     t = metal::min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_10.tmin))) {
+    if (!((_e52 >= ray_9.tmin))) {
         t = metal::max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_10.tmin) && (_e60 <= ray_10.tmax)))) {
+    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t;
-    metal::float3 _e82 = normalize_vec3f((ray_10.origin + (ray_10.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_9.origin + (ray_9.dir * metal::float3(_e76))) - s.center);
     float u_2 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv_1 = metal::float2(u_2, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t;
@@ -1169,7 +1161,7 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
-    Ray ray_11,
+    Ray ray_10,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_10 const& nodes,
@@ -1180,12 +1172,12 @@ Intersection dispatch_intersection(
     switch(type_id_1) {
         case 0u: {
             BvhMesh _e3 = load_BvhMesh(offset_4, params, _buffer_sizes);
-            Intersection _e4 = bvh_mesh_intersect(_e3, ray_11, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
+            Intersection _e4 = bvh_mesh_intersect(_e3, ray_10, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
-            Intersection _e6 = sphere_intersect(_e5, ray_11, F32_INF);
+            Intersection _e6 = sphere_intersect(_e5, ray_10, F32_INF);
             return _e6;
         }
         default: {
@@ -1197,7 +1189,7 @@ Intersection dispatch_intersection(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_12,
+    Ray ray_11,
     Candidate best_2,
     bool shadow_1,
     device type_5 const& params,
@@ -1211,12 +1203,12 @@ Candidate intersect_object(
 ) {
     Ray r_3 = {};
     GpuInstance inst_6 = instances[slot_2];
-    Ray _e7 = to_object(inst_6, ray_12);
+    Ray _e7 = to_object(inst_6, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_3;
-        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_12, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_3;
@@ -1226,7 +1218,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_8 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_12, c_8);
+        bool _e40 = accept(inst_6, ray_11, c_8);
         if (_e40) {
             return c_8;
         }
@@ -1235,10 +1227,10 @@ Candidate intersect_object(
 }
 
 float point_error(
-    metal::float3 origin_2,
+    metal::float3 origin_1,
     metal::float3 along
 ) {
-    metal::float3 a_7 = metal::abs(origin_2) + metal::abs(along);
+    metal::float3 a_7 = metal::abs(origin_1) + metal::abs(along);
     return POINT_ERROR * metal::max(metal::max(a_7.x, a_7.y), a_7.z);
 }
 
@@ -1309,7 +1301,7 @@ metal::float3 normal_to_world(
 }
 
 Hit finish_hit(
-    Ray ray_13,
+    Ray ray_12,
     Candidate c_1,
     device type_9 const& instances,
     device type_12 const& triangles,
@@ -1321,9 +1313,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_13.origin, ray_13.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_12.origin, ray_12.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_13.origin + (ray_13.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_12.origin + (ray_12.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1364,7 +1356,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_13.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_12.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -1451,17 +1443,17 @@ Ray sample_camera_ray(
     device type_17 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_14 = {};
+    Ray ray_13 = {};
     FrameUniforms frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
     Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, scratch, rng_state, params, F32_INF, _buffer_sizes);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    metal::float3 _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_13.origin;
     uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, _buffer_sizes);
-    ray_14.medium = _e17;
-    Ray _e18 = ray_14;
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
     return _e18;
 }
 
@@ -1471,7 +1463,7 @@ metal::float3 node_frame_bounds(
 }
 
 Candidate intersect_scene(
-    Ray ray_15,
+    Ray ray_14,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1491,7 +1483,7 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_15.tmax);
+    Candidate _e7 = no_candidate(ray_14.tmax);
     best_3 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1500,7 +1492,7 @@ Candidate intersect_scene(
     }
     uint base_3 = frame_3.tlas_root;
     GpuNode header_4 = nodes[base_3];
-    BoxRay _e19 = header_box_ray(header_4, ray_15);
+    BoxRay _e19 = box_ray(header_4, ray_14);
     metal::float3 _e22 = node_frame_bounds();
     float _e24 = best_3.t;
     float _e27 = slab_in_frame(metal::float3(0.0), _e22, _e19, _e24 * _e19.unit, F32_INF);
@@ -1521,7 +1513,7 @@ Candidate intersect_scene(
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e51 = child_1;
                 Candidate _e54 = best_3;
-                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_15, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+                Candidate _e55 = intersect_object(_e51 & NODE_FIRST_MASK, ray_14, _e54, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
                 best_3 = _e55;
                 uint _e57 = best_3.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1722,12 +1714,12 @@ metal::float4 sample_texture(
 
 metal::float3 skybox(
     Skybox b_7,
-    Ray ray_16,
+    Ray ray_15,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_16.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_15.dir);
     bool pole = (_e3.x == 0.0) && (_e3.z == 0.0);
     float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_7.rotation) * 0.017453292519943295474);
     float latitude = metal::acos(metal::min(metal::max(_e3.y, -1.0), 1.0));
@@ -1739,18 +1731,18 @@ metal::float3 skybox(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_17,
+    Ray ray_16,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Skybox _e2 = load_Skybox(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = skybox(_e2, ray_17, params, texels, _buffer_sizes);
+    metal::float3 _e3 = skybox(_e2, ray_16, params, texels, _buffer_sizes);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_18,
+    Ray ray_17,
     constant FrameUniforms& frame,
     device type_5 const& params,
     device type_5 const& texels,
@@ -1760,7 +1752,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18, params, texels, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17, params, texels, _buffer_sizes);
     return _e9;
 }
 
@@ -1776,10 +1768,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_19,
+    Ray ray_18,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1991,7 +1983,7 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_20,
+    Ray ray_19,
     Hit hit_2,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2008,7 +2000,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e3 = shading_normal(ray_20, hit_2);
+    metal::float3 _e3 = shading_normal(ray_19, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_5 = 0u;
@@ -2038,7 +2030,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_21,
+    Ray ray_20,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -2055,12 +2047,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_10, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_21, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_20, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_22,
+    Ray ray_21,
     Candidate c_3,
     constant FrameUniforms& frame,
     thread type_4& scratch,
@@ -2077,15 +2069,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_22, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_21, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_23,
+    Ray ray_22,
     float t_3,
     metal::float3 radiance
 ) {
@@ -2093,7 +2085,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_24,
+    Ray ray_23,
     float t_4,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2102,21 +2094,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_24.medium == 0u) {
+    if (ray_23.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_24.medium - 1u];
+    GpuInstance inst_9 = instances[ray_23.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_4, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_25,
+    Ray ray_24,
     Hit hit_4
 ) {
     return;
@@ -2173,7 +2165,7 @@ metal::float3 trace(
     float t_5 = {};
     type_21 stack_1 = {};
     uint depth = {};
-    Ray ray_26 = {};
+    Ray ray_25 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2211,7 +2203,7 @@ metal::float3 trace(
     }
     stack_1 = type_21 {};
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_25 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2230,10 +2222,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_26;
+            Ray _e67 = ray_25;
             Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_26;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2370,7 +2362,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_25 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack_1.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -475,7 +475,10 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ray) -> BoxRay {
+fn box_ray(header_1: GpuNode, ray_2: Ray) -> BoxRay {
+    let origin_2 = header_1.min;
+    let _e3 = node_frame_hi(header_1);
+    let extent = (_e3 - origin_2);
     let m_3 = max(max(abs(ray_2.dir.x), abs(ray_2.dir.y)), abs(ray_2.dir.z));
     let e = min(max(((bitcast<u32>(m_3) >> 23u) & 255u), 1u), 253u);
     let d_3 = (ray_2.dir * vec3(bitcast<f32>(((254u - e) << 23u))));
@@ -483,16 +486,10 @@ fn box_ray(origin_1: vec3<f32>, scale_1: vec3<f32>, extent: vec3<f32>, ray_2: Ra
     let floor_ = vec3(0.0000000000009094947f);
     let s_4 = select(vec3(1f), vec3(-1f), (d_3 < vec3(0f)));
     let inv = (vec3(1f) / select(d_3, (s_4 * floor_), (abs(d_3) < floor_)));
-    let rel = (origin_1 - ray_2.origin);
+    let rel = (origin_2 - ray_2.origin);
     let start = (rel * inv);
-    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_1))) * s_4);
-    return BoxRay((scale_1 * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
-}
-
-fn header_box_ray(header_1: GpuNode, ray_3: Ray) -> BoxRay {
-    let _e4 = node_frame_hi(header_1);
-    let _e7 = box_ray(header_1.min, header_1.max, (_e4 - header_1.min), ray_3);
-    return _e7;
+    let pad = (((vec3(0.0000009536743f) * abs(inv)) * ((extent + abs(rel)) + abs(origin_2))) * s_4);
+    return BoxRay((header_1.max * inv), (start - pad), (start + pad), (ray_2.tmin * unit), unit);
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: bool) -> vec3<f32> {
@@ -528,7 +525,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32, occlusion: 
     return select(vec3<f32>(bitcast<f32>(_e202), 0f, 0f), vec3<f32>(t_7, (v_2 * rcp), (w * rcp)), hit_8);
 }
 
-fn accept(inst_1: GpuInstance, ray_4: Ray, c: Candidate) -> bool {
+fn accept(inst_1: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     return true;
 }
 
@@ -580,7 +577,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -589,10 +586,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e7 = prepare_triangle_ray(ray_5);
+    let _e7 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_2 = nodes[base_1];
-    let _e12 = header_box_ray(header_2, ray_5);
+    let _e12 = box_ray(header_2, ray_4);
     sp_1 = 0u;
     child = header_2.a;
     loop {
@@ -611,7 +608,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, 
                 let _e38 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e38);
                 let _e42 = best.t;
-                let _e46 = hit_triangle(_e7, prim, ray_5.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
+                let _e46 = hit_triangle(_e7, prim, ray_4.tmin, _e42, (shadow && !(HAS_ANY_HIT)));
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let _e58 = triangles[((prim * 3u) + 1u)];
@@ -735,24 +732,24 @@ fn mesh_node_query(m: u32, i_1: u32) -> BvhNode {
     return BvhNode(_e73, _e74, (_e75 & NODE_FIRST_MASK), count_2);
 }
 
-fn intersect_aabb(ray_6: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
-    let parallel = (abs(ray_6.dir) < vec3(0.000000000000000000000000000000000000011754944f));
+fn intersect_aabb(ray_5: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
+    let parallel = (abs(ray_5.dir) < vec3(0.000000000000000000000000000000000000011754944f));
     let _e12 = vec3(1f);
-    let inv_dir = (_e12 / select(ray_6.dir, _e12, parallel));
-    let _e17 = ((min_ - ray_6.origin) * inv_dir);
-    let _e18 = ((max_ - ray_6.origin) * inv_dir);
-    let _e23 = ((min_ <= ray_6.origin) & (ray_6.origin <= max_));
+    let inv_dir = (_e12 / select(ray_5.dir, _e12, parallel));
+    let _e17 = ((min_ - ray_5.origin) * inv_dir);
+    let _e18 = ((max_ - ray_5.origin) * inv_dir);
+    let _e23 = ((min_ <= ray_5.origin) & (ray_5.origin <= max_));
     let _e25 = F32_INF;
     let _e27 = vec3(bitcast<f32>(_e25));
     let _e29 = F32_NEG_INF;
     let _e31 = vec3(bitcast<f32>(_e29));
     let near_3 = select(min(_e17, _e18), select(_e27, _e31, _e23), parallel);
     let far_3 = select(max(_e17, _e18), select(_e31, _e27, _e23), parallel);
-    return vec2<f32>(max(max(max(near_3.x, near_3.y), near_3.z), ray_6.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_6.tmax));
+    return vec2<f32>(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
-fn bvh_mesh_enter(ray_7: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
-    let _e5 = intersect_aabb(ray_7, n_1.min, n_1.max);
+fn bvh_mesh_enter(ray_6: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
+    let _e5 = intersect_aabb(ray_6, n_1.min, n_1.max);
     let _e7 = F32_INF;
     return select(bitcast<f32>(_e7), _e5.x, ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)));
 }
@@ -766,9 +763,9 @@ fn mesh_triangle_query(m_1: u32, i_2: u32) -> Triangle {
     return Triangle(_e12.xyz, _e20.xyz, _e28.xyz);
 }
 
-fn intersect_triangle(ray_8: Ray, tri: Triangle) -> Intersection {
+fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let _e10 = vec3(2139095040u);
-    let dir_5 = select(ray_8.dir, vec3(0f), (abs(ray_8.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let dir_5 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
     let _e31 = abs(dir_5);
     let _e38 = (_e31.y > _e31.x);
     let kz_1 = select(select(0u, 1u, _e38), 2u, (_e31.z > select(_e31.x, _e31.y, _e38)));
@@ -781,13 +778,13 @@ fn intersect_triangle(ray_8: Ray, tri: Triangle) -> Intersection {
     let sx = (dir_5[kx_1] / dz_1);
     let sy = (dir_5[ky_1] / dz_1);
     let sz = (1f / dz_1);
-    let _e62 = (tri.v0_ - ray_8.origin);
+    let _e62 = (tri.v0_ - ray_7.origin);
     let _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
     let _e69 = (_e62[ky_1] - (sy * _e62[kz_1]));
-    let _e71 = (tri.v1_ - ray_8.origin);
+    let _e71 = (tri.v1_ - ray_7.origin);
     let _e77 = (_e71[kx_1] - (sx * _e71[kz_1]));
     let _e78 = (_e71[ky_1] - (sy * _e71[kz_1]));
-    let _e80 = (tri.v2_ - ray_8.origin);
+    let _e80 = (tri.v2_ - ray_7.origin);
     let _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     let _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     let u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -796,13 +793,13 @@ fn intersect_triangle(ray_8: Ray, tri: Triangle) -> Intersection {
     let det_1 = ((u_1 + v_3) + w_1);
     let _e112 = (1f / det_1);
     let t_9 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    let hit_9 = (((((all(((bitcast<vec3<u32>>(ray_8.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_8.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_3 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_3 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_9 >= ray_8.tmin) && (t_9 <= ray_8.tmax)));
+    let hit_9 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_3 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_3 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_9 >= ray_7.tmin) && (t_9 <= ray_7.tmax)));
     let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     let _e137 = F32_INF;
     return Intersection(select(bitcast<f32>(_e137), t_9, hit_9), select(vec3<f32>(0f, 0f, 1f), _e132, hit_9), select(vec2(0f), vec2<f32>((v_3 * _e112), (w_1 * _e112)), hit_9));
 }
 
-fn bvh_mesh_intersect(g: BvhMesh, ray_9: Ray) -> Intersection {
+fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
     var best_1: Intersection;
     var r_2: Ray;
     var stack: array<u32, 64>;
@@ -814,7 +811,7 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_9: Ray) -> Intersection {
 
     let _e3 = F32_INF;
     best_1 = Intersection(bitcast<f32>(_e3), vec3<f32>(0f, 0f, 1f), vec2<f32>());
-    r_2 = ray_9;
+    r_2 = ray_8;
     stack = array<u32, 64>();
     stack_t = array<f32, 64>();
     sp_2 = 0u;
@@ -919,13 +916,13 @@ fn load_Sphere(offset_3: u32) -> Sphere {
     return Sphere(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24));
 }
 
-fn sphere_intersect(s: Sphere, ray_10: Ray) -> Intersection {
+fn sphere_intersect(s: Sphere, ray_9: Ray) -> Intersection {
     var t: f32;
 
-    let f_2 = (ray_10.origin - s.center);
-    let a_6 = dot(ray_10.dir, ray_10.dir);
-    let b_9 = -(dot(f_2, ray_10.dir));
-    let l_1 = (f_2 + (ray_10.dir * vec3((b_9 / a_6))));
+    let f_2 = (ray_9.origin - s.center);
+    let a_6 = dot(ray_9.dir, ray_9.dir);
+    let b_9 = -(dot(f_2, ray_9.dir));
+    let l_1 = (f_2 + (ray_9.dir * vec3((b_9 / a_6))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if (!((disc >= 0f)) || !((a_6 > 0f))) {
@@ -937,33 +934,33 @@ fn sphere_intersect(s: Sphere, ray_10: Ray) -> Intersection {
     let t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     let _e52 = t;
-    if !((_e52 >= ray_10.tmin)) {
+    if !((_e52 >= ray_9.tmin)) {
         t = max(t0_1, t1_1);
     }
     let _e57 = t;
     let _e60 = t;
-    if !(((_e57 >= ray_10.tmin) && (_e60 <= ray_10.tmax))) {
+    if !(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax))) {
         let _e66 = F32_INF;
         return Intersection(bitcast<f32>(_e66), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let _e76 = t;
-    let _e82 = normalize_vec3f(((ray_10.origin + (ray_10.dir * vec3(_e76))) - s.center));
+    let _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * vec3(_e76))) - s.center));
     let u_2 = select((0.5f + (atan2(_e82.z, -(_e82.x)) / TAU)), 0.5f, ((_e82.x == 0f) && (_e82.z == 0f)));
     let uv_1 = vec2<f32>(u_2, (acos(min(max(_e82.y, -1f), 1f)) * INV_PI));
     let _e109 = t;
     return Intersection(_e109, _e82, uv_1);
 }
 
-fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_11: Ray) -> Intersection {
+fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_10: Ray) -> Intersection {
     switch type_id_1 {
         case 0u: {
             let _e3 = load_BvhMesh(offset_4);
-            let _e4 = bvh_mesh_intersect(_e3, ray_11);
+            let _e4 = bvh_mesh_intersect(_e3, ray_10);
             return _e4;
         }
         case 1u: {
             let _e5 = load_Sphere(offset_4);
-            let _e6 = sphere_intersect(_e5, ray_11);
+            let _e6 = sphere_intersect(_e5, ray_10);
             return _e6;
         }
         default: {
@@ -972,16 +969,16 @@ fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_11: Ray) -> Intersec
     return Intersection();
 }
 
-fn intersect_object(slot_2: u32, ray_12: Ray, best_2: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_11: Ray, best_2: Candidate, shadow_1: bool) -> Candidate {
     var r_3: Ray;
 
     let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_12);
+    let _e7 = to_object(inst_6, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_3;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_12, _e14, best_2, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1);
         return _e15;
     }
     let _e18 = r_3;
@@ -991,7 +988,7 @@ fn intersect_object(slot_2: u32, ray_12: Ray, best_2: Candidate, shadow_1: bool)
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
         let c_8 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_6, ray_12, c_8);
+        let _e40 = accept(inst_6, ray_11, c_8);
         if _e40 {
             return c_8;
         }
@@ -999,8 +996,8 @@ fn intersect_object(slot_2: u32, ray_12: Ray, best_2: Candidate, shadow_1: bool)
     return best_2;
 }
 
-fn point_error(origin_2: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_7 = (abs(origin_2) + abs(along));
+fn point_error(origin_1: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_7 = (abs(origin_1) + abs(along));
     return (POINT_ERROR * max(max(a_7.x, a_7.y), a_7.z));
 }
 
@@ -1053,15 +1050,15 @@ fn normal_to_world(inst_5: GpuInstance, n_3: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn finish_hit(ray_13: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_12: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_13.origin, (ray_13.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_12.origin, (ray_12.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_13.origin + (ray_13.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_12.origin + (ray_12.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -1102,7 +1099,7 @@ fn finish_hit(ray_13: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_13.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_12.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -1154,18 +1151,18 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
 }
 
 fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
-    var ray_14: Ray;
+    var ray_13: Ray;
 
     let frame_2 = frame;
     rng_seed(pixel_4, sample_4, frame_2.seed);
     let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
-    ray_14 = _e7;
-    ray_14.depth = 0u;
-    ray_14.kind = RAY_CAMERA;
-    let _e15 = ray_14.origin;
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    let _e15 = ray_13.origin;
     let _e17 = medium_at(_e15, NO_HIT);
-    ray_14.medium = _e17;
-    let _e18 = ray_14;
+    ray_13.medium = _e17;
+    let _e18 = ray_13;
     return _e18;
 }
 
@@ -1173,7 +1170,7 @@ fn node_frame_bounds() -> vec3<f32> {
     return vec3(65535f);
 }
 
-fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
     var best_3: Candidate;
     var sp_3: u32;
     var child_1: u32;
@@ -1182,7 +1179,7 @@ fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_15.tmax);
+    let _e7 = no_candidate(ray_14.tmax);
     best_3 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
@@ -1191,7 +1188,7 @@ fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
     }
     let base_3 = frame_3.tlas_root;
     let header_4 = nodes[base_3];
-    let _e19 = header_box_ray(header_4, ray_15);
+    let _e19 = box_ray(header_4, ray_14);
     let _e22 = node_frame_bounds();
     let _e24 = best_3.t;
     let _e27 = slab_in_frame(vec3(0f), _e22, _e19, (_e24 * _e19.unit));
@@ -1209,7 +1206,7 @@ fn intersect_scene(ray_15: Ray, shadow_2: bool) -> Candidate {
             if (((_e42 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e51 = child_1;
                 let _e54 = best_3;
-                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_15, _e54, shadow_2);
+                let _e55 = intersect_object((_e51 & NODE_FIRST_MASK), ray_14, _e54, shadow_2);
                 best_3 = _e55;
                 let _e57 = best_3.slot;
                 if (shadow_2 && (_e57 != NO_HIT)) {
@@ -1373,8 +1370,8 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     return mix(a_8, b_11, vec4(fr.y));
 }
 
-fn skybox(b_7: Skybox, ray_16: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_16.dir);
+fn skybox(b_7: Skybox, ray_15: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_15.dir);
     let pole = ((_e3.x == 0f) && (_e3.z == 0f));
     let longitude = (select(atan2(_e3.x, -(_e3.z)), 0f, pole) - radians(b_7.rotation));
     let latitude = acos(min(max(_e3.y, -1f), 1f));
@@ -1383,18 +1380,18 @@ fn skybox(b_7: Skybox, ray_16: Ray) -> vec3<f32> {
     return (_e34.xyz * vec3(b_7.intensity));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_17: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_16: Ray) -> vec3<f32> {
     let _e2 = load_Skybox(offset_6);
-    let _e3 = skybox(_e2, ray_17);
+    let _e3 = skybox(_e2, ray_16);
     return _e3;
 }
 
-fn miss(ray_18: Ray) -> vec3<f32> {
+fn miss(ray_17: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_18);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
@@ -1405,8 +1402,8 @@ fn load_Lambert(offset_7: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_19: Ray, hit_1: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+fn shading_normal(ray_18: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
     return faceForward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1528,11 +1525,11 @@ fn sample_light_query(i_4: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn lambert_shade(m_2: Lambert, ray_20: Ray, hit_2: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_19: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
-    let _e3 = shading_normal(ray_20, hit_2);
+    let _e3 = shading_normal(ray_19, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_5 = 0u;
@@ -1554,39 +1551,39 @@ fn lambert_shade(m_2: Lambert, ray_20: Ray, hit_2: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_21: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_20: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_10);
-    let _e4 = lambert_shade(_e3, ray_21, hit_3);
+    let _e4 = lambert_shade(_e3, ray_20, hit_3);
     return _e4;
 }
 
-fn shade_direct(ray_22: Ray, c_3: Candidate) -> vec3<f32> {
+fn shade_direct(ray_21: Ray, c_3: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_22, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_21, c_3);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_23: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_22: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_24: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_23: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_24.medium == 0u) {
+    if (ray_23.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_24.medium - 1u)];
+    let inst_9 = instances[(ray_23.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_4, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_25: Ray, hit_4: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_24: Ray, hit_4: Hit) {
     return;
 }
 
@@ -1614,7 +1611,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_5: f32;
     var stack_1: array<Frame, 4>;
     var depth: u32;
-    var ray_26: Ray;
+    var ray_25: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1653,7 +1650,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack_1 = array<Frame, 4>();
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_25 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1669,10 +1666,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_26;
+            let _e67 = ray_25;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_26;
+            let _e70 = ray_25;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1804,7 +1801,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_10, _e283, dir_7);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_26 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_25 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;
