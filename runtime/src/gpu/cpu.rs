@@ -21,6 +21,9 @@
 //!   per lane: there 128 bits make the compile shorter, while with AVX-512 they would make frames
 //!   slower, so that case is left alone. On a CPU without AVX-512 wider batches run most frames
 //!   faster, so a render known to be long ([`WIDE_MIN_SAMPLES`]) keeps Mesa's own width there.
+//! - 512-bit batches ([`WIDEST_WIDTH`]) from Mesa 26 on, on a CPU whose AVX-512 units are 512
+//!   bits wide (AMD Zen 5), for a render known to be long ([`WIDEST_MIN_SAMPLES`]): there they run
+//!   every example's frame 0.71 to 0.92 times as long (one 1.02) and compile it longer.
 //! - The quick JIT ([`CpuJit::Quick`], `GALLIVM_PERF=nopt`: LLVM's optimisation passes off) when
 //!   the caller asks for it, which `rtc` does for renders too small for optimised code to repay its
 //!   compile (a preview, a first pixel). Images stay byte-identical; kernels compile in a third to
@@ -171,6 +174,9 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 ///   without AVX-512 ([`lavapipe_loads_per_lane`]); on a CPU without AVX-512 only for work of
 ///   unknown size or below [`WIDE_MIN_SAMPLES`] (`samples`: what the process will render, when
 ///   known);
+/// - [`VECTOR_WIDTH_VAR`]` = `[`WIDEST_WIDTH`] when that adapter is from [`NARROW_BEFORE_MESA`] on,
+///   the CPU runs AVX-512 at full width and the render has at least [`WIDEST_MIN_SAMPLES`]
+///   (`widest_width`);
 /// - [`JIT_VAR`]` = `[`QUICK_JIT`] when `jit` is [`CpuJit::Quick`] and the machine has a Vulkan
 ///   lavapipe adapter;
 /// - [`CACHE_DIR_VAR`] to [`width_cache_dir`]'s directory for the width when [`VECTOR_WIDTH_VAR`]
@@ -201,11 +207,19 @@ pub fn apply_lavapipe_defaults(jit: CpuJit, samples: Option<u64>) -> &'static [&
             std::env::remove_var(JIT_VAR);
         }
         let avx512 = lavapipe_has_avx512(|name| std::env::var_os(name));
-        let narrow = info
-            .as_deref()
-            .is_some_and(|info| narrow_width(info, avx512, samples));
-        if std::env::var_os(VECTOR_WIDTH_VAR).is_none() && narrow {
-            std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
+        let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+        let full_width = full_width_avx512(&cpuinfo, avx512);
+        let width = info.as_deref().and_then(|info| {
+            if narrow_width(info, avx512, samples) {
+                Some(NARROW_WIDTH)
+            } else if widest_width(info, full_width, samples) {
+                Some(WIDEST_WIDTH)
+            } else {
+                None
+            }
+        });
+        if let Some(width) = width.filter(|_| std::env::var_os(VECTOR_WIDTH_VAR).is_none()) {
+            std::env::set_var(VECTOR_WIDTH_VAR, width);
             set.push(VECTOR_WIDTH_VAR);
         }
         // Releases before Mesa 26 leave the width out of their shader cache's key.
@@ -317,6 +331,51 @@ fn loads_per_lane(driver_info: &str, avx512: bool) -> bool {
 /// 2026-12-07:
 /// docs/bench/lavapipe.md, "The SIMD width by the size of the render (2026-12-07, later)".
 pub const WIDE_MIN_SAMPLES: u64 = 1 << 25;
+
+/// The fewest samples (pixels times samples per pixel) of a render for which rtc gives lavapipe
+/// 512-bit batches ([`WIDEST_WIDTH`], 16 invocations a batch) on a CPU whose AVX-512 units are
+/// 512 bits wide (`full_width_avx512`): 2^23 (8.4 M), e.g. 1920x1080 at 5 spp. Measured on AMD
+/// Zen 5 (EPYC, family 26 model 2) with Mesa 26.1.6, every example, alternated: the 512-bit frame
+/// is 0.71 (lights) to 0.92 (shading) of the 256-bit one, the thesis scene's 0.83, the path
+/// tracers' 0.86 to 0.90, glass_mirror's 1.02 (43 ms frames), images byte-identical; but every
+/// kernel's optimised compile takes 37 to 516 ms longer (cold; fog 887 → 1,404 ms, the thesis
+/// scene 299 → 385), repaid after 0.7 M (cornell_path) to 6.6 M samples (cameras). The bound keeps
+/// a margin of 1.28 above the largest. On Zen 4, whose AVX-512 runs 512-bit operations in two
+/// 256-bit halves, the thesis frame was 0.92 and the path tracers equal or slower, so it keeps
+/// Mesa's 256 (docs/bench/lavapipe.md, "512-bit batches on Zen 5 (2026-12-07, night)").
+pub const WIDEST_MIN_SAMPLES: u64 = 1 << 23;
+
+/// The width [`apply_lavapipe_defaults`] gives lavapipe from [`NARROW_BEFORE_MESA`] on for renders
+/// of at least [`WIDEST_MIN_SAMPLES`] on a CPU with full-width AVX-512 (`full_width_avx512`).
+pub const WIDEST_WIDTH: &str = "512";
+
+/// Whether [`apply_lavapipe_defaults`] gives lavapipe with this `driver_info` [`WIDEST_WIDTH`]
+/// batches for a render of `samples` samples: from [`NARROW_BEFORE_MESA`] on (whose loads are
+/// gathers; before it each load is a loop over the batch's lanes, whose code grows with the
+/// batch), on a CPU with full-width AVX-512 (`full_width`), for a render known to have at least
+/// [`WIDEST_MIN_SAMPLES`] (a session of frames not counted ahead keeps Mesa's own width, as it
+/// does on CPUs without AVX-512).
+#[cfg(not(target_arch = "wasm32"))]
+fn widest_width(driver_info: &str, full_width: bool, samples: Option<u64>) -> bool {
+    full_width
+        && mesa_major(driver_info).is_some_and(|major| major >= NARROW_BEFORE_MESA)
+        && samples.is_some_and(|n| n >= WIDEST_MIN_SAMPLES)
+}
+
+/// Whether llvmpipe may use AVX-512 (`lavapipe_has_avx512`) on a CPU known to run 512-bit
+/// operations at full width, read from a `/proc/cpuinfo` text: AMD's family 26 (Zen 5). Measured
+/// on the EPYC (family 26 model 2); the laptop parts of that family that run AVX-512 in two halves
+/// (Strix Point) were not, nor Intel's CPUs, which keep Mesa's width.
+#[cfg(not(target_arch = "wasm32"))]
+fn full_width_avx512(cpuinfo: &str, avx512: bool) -> bool {
+    let field = |name: &str| {
+        cpuinfo.lines().find_map(|line| {
+            let (key, value) = line.split_once(':')?;
+            (key.trim() == name).then(|| value.trim())
+        })
+    };
+    avx512 && field("vendor_id") == Some("AuthenticAMD") && field("cpu family") == Some("26")
+}
 
 /// Whether [`apply_lavapipe_defaults`] gives lavapipe with this `driver_info` 128-bit batches for a
 /// render of `samples` samples (`None`: unknown, or a session of frames not counted ahead, such as
@@ -588,6 +647,55 @@ mod tests {
         let full_hd = |spp: u64| Some(1920 * 1080 * spp);
         assert!(narrow_width(mesa_25, false, full_hd(16)));
         assert!(!narrow_width(mesa_25, false, full_hd(17)));
+    }
+
+    #[test]
+    fn long_renders_get_512_bits_only_on_full_width_avx512_from_mesa_26() {
+        let mesa_25 = "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)";
+        let mesa_26 = "Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)";
+        let long = Some(WIDEST_MIN_SAMPLES);
+        let short = Some(WIDEST_MIN_SAMPLES - 1);
+        assert!(widest_width(mesa_26, true, long));
+        assert!(widest_width("Mesa 27.0.0-devel", true, long));
+        // A shorter render, or one of unknown size: Mesa's width.
+        assert!(!widest_width(mesa_26, true, short));
+        assert!(!widest_width(mesa_26, true, None));
+        // Mesa 25 (per-lane loops), another CPU, or not lavapipe: never.
+        assert!(!widest_width(mesa_25, true, long));
+        assert!(!widest_width(mesa_26, false, long));
+        assert!(!widest_width("535.104.05", true, long));
+        // 1920x1080 at 4 spp is just below the bound, at 5 spp above it (as its docs say).
+        let full_hd = |spp: u64| Some(1920 * 1080 * spp);
+        assert!(!widest_width(mesa_26, true, full_hd(4)));
+        assert!(widest_width(mesa_26, true, full_hd(5)));
+        // The two rules never both hold: 512 bits need AVX-512 and Mesa 26, where loads are gathers.
+        for info in [mesa_25, mesa_26] {
+            for samples in [None, short, long] {
+                for avx512 in [true, false] {
+                    assert!(
+                        !(narrow_width(info, avx512, samples)
+                            && widest_width(info, avx512, samples))
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn full_width_avx512_is_amds_family_26() {
+        let cpu = |vendor: &str, family: &str| {
+            format!(
+                "processor\t: 0\nvendor_id\t: {vendor}\ncpu family\t: {family}\nmodel\t\t: 2\n\
+                 model name\t: AMD EPYC\nflags\t\t: avx2 avx512f\n"
+            )
+        };
+        assert!(full_width_avx512(&cpu("AuthenticAMD", "26"), true));
+        // llvmpipe kept off AVX-512 (a caps override), Zen 4 and Zen 3, Intel, or no cpuinfo.
+        assert!(!full_width_avx512(&cpu("AuthenticAMD", "26"), false));
+        assert!(!full_width_avx512(&cpu("AuthenticAMD", "25"), true));
+        assert!(!full_width_avx512(&cpu("GenuineIntel", "6"), true));
+        assert!(!full_width_avx512(&cpu("GenuineIntel", "26"), true));
+        assert!(!full_width_avx512("", true));
     }
 
     #[test]
