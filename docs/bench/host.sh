@@ -1,4 +1,5 @@
-# Sourced by the scripts in docs/bench: sets `cpu` (the model name), `features` (`AVX2 AVX-512`,
+# Sourced by the scripts in docs/bench: sets `cpu` (the model name, with the family and model
+# numbers where /proc/cpuinfo has them), `features` (`AVX2 AVX-512`,
 # `AVX2` or `no AVX2`) and `host_line` (one line naming both, the thread count, the commit and the
 # date), and prints that line. On a CPU driver the vector units decide the speed (issue 23), so
 # every figure these scripts print is preceded by it. Mesa's GALLIUM_OVERRIDE_CPU_CAPS,
@@ -7,6 +8,11 @@
 # Mesa 26; the adapter line the scripts print names the width lavapipe used: "128 bits".)
 cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
 cpu=${cpu:-$(uname -m)}
+# The family and model numbers tell apart what a VM's model name hides (`AMD EPYC`: family 25 is
+# Zen 3 or Zen 4, 26 Zen 5), as rtc's own `host:` line does.
+family=$(grep -m1 '^cpu family' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | tr -d ' \t' || true)
+model=$(grep -m1 -E '^model[[:space:]]*:' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | tr -d ' \t' || true)
+[[ -n $family && -n $model ]] && cpu+=", family $family model $model"
 flags=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null || true)
 features=AVX2
 [[ $flags == *avx512f* ]] && features="AVX2 AVX-512"

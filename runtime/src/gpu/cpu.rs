@@ -368,13 +368,9 @@ fn widest_width(driver_info: &str, full_width: bool, samples: Option<u64>) -> bo
 /// (Strix Point) were not, nor Intel's CPUs, which keep Mesa's width.
 #[cfg(not(target_arch = "wasm32"))]
 fn full_width_avx512(cpuinfo: &str, avx512: bool) -> bool {
-    let field = |name: &str| {
-        cpuinfo.lines().find_map(|line| {
-            let (key, value) = line.split_once(':')?;
-            (key.trim() == name).then(|| value.trim())
-        })
-    };
-    avx512 && field("vendor_id") == Some("AuthenticAMD") && field("cpu family") == Some("26")
+    avx512
+        && cpuinfo_field(cpuinfo, "vendor_id") == Some("AuthenticAMD")
+        && family_model(cpuinfo).is_some_and(|(family, _)| family == 26)
 }
 
 /// Whether [`apply_lavapipe_defaults`] gives lavapipe with this `driver_info` 128-bit batches for a
@@ -414,6 +410,11 @@ const MESA_CPU_VARIABLES: [&str; 3] = ["GALLIUM_OVERRIDE_CPU_CAPS", VECTOR_WIDTH
 pub struct HostCpu {
     /// The model name, e.g. `AMD EPYC 7B13`.
     pub model: String,
+    /// The CPU's family and model numbers (`cpu family`, `model` in `/proc/cpuinfo`), which tell
+    /// apart the generations a virtual machine's model name hides (`AMD EPYC` is family 25 for
+    /// Zen 3 and Zen 4, 26 for Zen 5, and lavapipe's speed differs between them); `None` where
+    /// `/proc/cpuinfo` does not say.
+    pub family_model: Option<(u32, u32)>,
     /// Hardware threads this process may use.
     pub threads: usize,
     /// The vector extensions that decide a CPU driver's speed, present on this CPU: `AVX2`,
@@ -427,10 +428,8 @@ pub struct HostCpu {
 impl HostCpu {
     /// Reads the running machine's CPU.
     pub fn detect() -> Self {
-        let model = std::fs::read_to_string("/proc/cpuinfo")
-            .ok()
-            .and_then(|text| model_name(&text))
-            .unwrap_or_else(|| std::env::consts::ARCH.to_string());
+        let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+        let model = model_name(&cpuinfo).unwrap_or_else(|| std::env::consts::ARCH.to_string());
         let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
         let mesa_overrides = MESA_CPU_VARIABLES
             .iter()
@@ -446,6 +445,7 @@ impl HostCpu {
             .collect();
         Self {
             model,
+            family_model: family_model(&cpuinfo),
             threads,
             vector: vector_features(),
             mesa_overrides,
@@ -472,13 +472,16 @@ impl HostCpu {
 }
 
 impl fmt::Display for HostCpu {
-    /// One line: `AMD EPYC 7B13, 2 threads, AVX2 and AVX-512` (and `; GALLIUM_OVERRIDE_CPU_CAPS=avx`
-    /// when such a variable is set).
+    /// One line: `AMD EPYC 7B13 (family 25 model 1), 2 threads, AVX2 and AVX-512` (and
+    /// `; GALLIUM_OVERRIDE_CPU_CAPS=avx` when such a variable is set).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.model)?;
+        if let Some((family, model)) = self.family_model {
+            write!(f, " (family {family} model {model})")?;
+        }
         write!(
             f,
-            "{}, {} thread{}",
-            self.model,
+            ", {} thread{}",
             self.threads,
             if self.threads == 1 { "" } else { "s" }
         )?;
@@ -492,12 +495,25 @@ impl fmt::Display for HostCpu {
     }
 }
 
-/// The first `model name` line of a `/proc/cpuinfo` text, trimmed; `None` when there is none.
-fn model_name(cpuinfo: &str) -> Option<String> {
+/// The value of the first `name` line of a `/proc/cpuinfo` text, trimmed; `None` when there is
+/// none or it is empty.
+fn cpuinfo_field<'a>(cpuinfo: &'a str, name: &str) -> Option<&'a str> {
     cpuinfo.lines().find_map(|line| {
         let (key, value) = line.split_once(':')?;
-        (key.trim() == "model name" && !value.trim().is_empty()).then(|| value.trim().to_string())
+        (key.trim() == name && !value.trim().is_empty()).then(|| value.trim())
     })
+}
+
+/// The first `model name` line of a `/proc/cpuinfo` text, trimmed; `None` when there is none.
+fn model_name(cpuinfo: &str) -> Option<String> {
+    cpuinfo_field(cpuinfo, "model name").map(str::to_string)
+}
+
+/// The `cpu family` and `model` numbers of a `/proc/cpuinfo` text (x86); `None` unless both are
+/// there and decimal.
+fn family_model(cpuinfo: &str) -> Option<(u32, u32)> {
+    let number = |name| cpuinfo_field(cpuinfo, name)?.parse().ok();
+    Some((number("cpu family")?, number("model")?))
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -577,12 +593,24 @@ mod tests {
         assert_eq!(model_name(text).as_deref(), Some("AMD EPYC 7B13"));
         assert_eq!(model_name("processor : 0\nmodel name :   \n"), None);
         assert_eq!(model_name(""), None);
+        assert_eq!(
+            family_model("vendor_id\t: AuthenticAMD\ncpu family\t: 26\nmodel\t\t: 2\nmodel name\t: AMD EPYC\n"),
+            Some((26, 2))
+        );
+        // `model name` is not `model`; an absent or odd number gives nothing.
+        assert_eq!(
+            family_model("cpu family\t: 26\nmodel name\t: AMD EPYC\n"),
+            None
+        );
+        assert_eq!(family_model("cpu family\t: 0x1a\nmodel\t\t: 2\n"), None);
+        assert_eq!(family_model(""), None);
     }
 
     #[test]
     fn the_line_names_model_threads_vectors_and_overrides() {
         let cpu = HostCpu {
             model: "AMD EPYC 7B13".into(),
+            family_model: Some((25, 1)),
             threads: 2,
             vector: vec!["AVX2"],
             mesa_overrides: vec!["GALLIUM_OVERRIDE_CPU_CAPS=avx".into()],
@@ -591,14 +619,23 @@ mod tests {
         if cfg!(target_arch = "x86_64") {
             assert_eq!(
                 line,
-                "AMD EPYC 7B13, 2 threads, AVX2, no AVX-512; GALLIUM_OVERRIDE_CPU_CAPS=avx"
+                "AMD EPYC 7B13 (family 25 model 1), 2 threads, AVX2, no AVX-512; \
+                 GALLIUM_OVERRIDE_CPU_CAPS=avx"
             );
         } else {
             assert_eq!(
                 line,
-                "AMD EPYC 7B13, 2 threads; GALLIUM_OVERRIDE_CPU_CAPS=avx"
+                "AMD EPYC 7B13 (family 25 model 1), 2 threads; GALLIUM_OVERRIDE_CPU_CAPS=avx"
             );
         }
+        let unknown = HostCpu {
+            model: "aarch64".into(),
+            family_model: None,
+            threads: 1,
+            vector: Vec::new(),
+            mesa_overrides: Vec::new(),
+        };
+        assert!(unknown.to_string().starts_with("aarch64, 1 thread"));
     }
 
     #[test]
