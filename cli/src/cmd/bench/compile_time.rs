@@ -157,6 +157,15 @@ fn child(exe: &Path) -> Command {
     cmd
 }
 
+/// Whether `exe`, this process's executable, is a dynamic loader (`ld-linux-x86-64.so.2` and the
+/// like) rather than rtc: a process started as `ld.so PROGRAM ARGS`, as
+/// docs/bench/current_lavapipe.sh starts one, has the loader as its executable.
+fn started_by_a_loader(exe: &Path) -> bool {
+    exe.file_name()
+        .and_then(|n| n.to_str())
+        .is_some_and(|n| n.starts_with("ld-") || n.starts_with("ld.so"))
+}
+
 /// `--exec MODEL --cpu-jit JIT` for a child `rtc render`/`watch`.
 fn model_args<'a>(exec: &'a str, jit: &'a str) -> [&'a str; 4] {
     ["--exec", exec, "--cpu-jit", jit]
@@ -596,6 +605,18 @@ pub fn run(args: &super::Args, ctx: &Context) -> Exit {
         Ok(e) => e,
         Err(e) => return super::fail(&format!("cannot find this rtc executable: {e}"), ctx),
     };
+    if started_by_a_loader(&exe) {
+        // `current_lavapipe.sh rtc bench --compile`: the children would be the loader itself.
+        return super::fail(
+            &format!(
+                "this rtc was started through the dynamic loader `{}`, so it cannot start itself \
+                 again for each cold render\nhelp: let rtc start it: \
+                 `{RUNNER_ENV}=\"bash docs/bench/current_lavapipe.sh\" rtc bench --compile`",
+                exe.display()
+            ),
+            ctx,
+        );
+    }
     let scratch = std::env::temp_dir().join(format!("rtc-bench-compile-{}", std::process::id()));
     if let Err(e) = std::fs::create_dir_all(&scratch) {
         return super::fail(&format!("cannot create `{}`: {e}", scratch.display()), ctx);
@@ -651,6 +672,21 @@ pub fn run(args: &super::Args, ctx: &Context) -> Exit {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_loader_is_not_rtc() {
+        for loader in [
+            "/root/.cache/rtc/sysroot/usr/lib64/ld-linux-x86-64.so.2",
+            "/lib/ld-linux-aarch64.so.1",
+            "/lib/ld-musl-x86_64.so.1",
+            "/usr/libexec/ld.so",
+        ] {
+            assert!(started_by_a_loader(Path::new(loader)), "{loader}");
+        }
+        for rtc in ["/work/target/release/rtc", "rtc", "/usr/bin/rtc-ld", "/"] {
+            assert!(!started_by_a_loader(Path::new(rtc)), "{rtc}");
+        }
+    }
 
     #[test]
     fn reads_summary_lines() {
