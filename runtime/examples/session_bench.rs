@@ -353,6 +353,9 @@ fn run() -> Result<(), String> {
 }
 
 fn main() {
+    // What `rtc view` does first (the settings it measures against): rtc's lavapipe defaults for
+    // a session of frames whose samples are not known ahead. Before any thread or wgpu instance.
+    rtc_runtime::gpu::apply_lavapipe_defaults(rtc_runtime::gpu::CpuJit::Optimized, None);
     if let Err(e) = run() {
         eprintln!("error: {e}");
         std::process::exit(1);
