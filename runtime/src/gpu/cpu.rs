@@ -207,12 +207,15 @@ pub fn apply_lavapipe_defaults(jit: CpuJit, samples: Option<u64>) -> &'static [&
             std::env::remove_var(JIT_VAR);
         }
         let avx512 = lavapipe_has_avx512(|name| std::env::var_os(name));
-        let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
-        let full_width = full_width_avx512(&cpuinfo, avx512);
+        // `/proc/cpuinfo` is read only where the answer matters: lavapipe not given 128 bits.
+        let full_width = || {
+            let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+            full_width_avx512(&cpuinfo, avx512)
+        };
         let width = info.as_deref().and_then(|info| {
             if narrow_width(info, avx512, samples) {
                 Some(NARROW_WIDTH)
-            } else if widest_width(info, full_width, samples) {
+            } else if widest_width(info, full_width(), samples) {
                 Some(WIDEST_WIDTH)
             } else {
                 None
