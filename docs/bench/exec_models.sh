@@ -9,12 +9,13 @@
 #
 # `SIZE=WxH` renders every example at that size instead of its own (for the long path-traced ones).
 # Prints the CPU (model, AVX2 / AVX-512), the adapter and driver, then one line per example, and
-# writes the table as JSON to `exec_models.json` in the working directory.
+# writes the table as JSON to `exec_models.json` in the working directory. `RTC_PREBUILT=1` uses
+# target/release/rtc as it is, without building it (docs/bench/gpu.sh, on a machine without Rust).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source docs/bench/args.sh
 bench_args 5 "$@"
-cargo build --release --quiet -p rtc
+[[ -n ${RTC_PREBUILT:-} ]] || cargo build --release --quiet -p rtc
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 out=$(mktemp -d)
 source docs/bench/host.sh

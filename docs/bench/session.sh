@@ -7,7 +7,8 @@
 #   bash docs/bench/session.sh [--current-lavapipe] [RUNS] [SCENE.rt] [--size WxH]
 #
 # Default: examples/thesis_scene/scene.rt at 960x540, 7 runs. Prints the CPU (model, AVX2 /
-# AVX-512), the adapter and driver, the table and a JSON line.
+# AVX-512), the adapter and driver, the table and a JSON line. `RTC_PREBUILT=1` uses
+# target/release/examples/session_bench as it is, without building it (docs/bench/gpu.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 runner=()
@@ -17,7 +18,7 @@ if [[ ${1:-} == --current-lavapipe ]]; then
 fi
 runs=${1:-7}
 shift || true
-cargo build --release --quiet -p rtc-runtime --example session_bench
+[[ -n ${RTC_PREBUILT:-} ]] || cargo build --release --quiet -p rtc-runtime --example session_bench
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 source docs/bench/host.sh
 "${runner[@]}" target/release/examples/session_bench --runs "$runs" "$@"

@@ -3,7 +3,8 @@
 //!
 //! What is measured, each in a **child process** of this same `rtc` (so every measurement starts
 //! with a fresh driver) with `MESA_SHADER_CACHE_DISABLE=true` (Mesa reads it when the driver
-//! loads, hence the child) and `RTC_PIPELINE_CACHE=off`:
+//! loads, hence the child), `__GL_SHADER_DISK_CACHE=0` (NVIDIA's driver's, for a lent GPU) and
+//! `RTC_PIPELINE_CACHE=off`:
 //! - **cold**: for every example (`PATH` is a folder of folders holding a `scene.rt`, default
 //!   `examples`; or one scene file), `rtc render scene.rt --size 64x48 --spp 1`: the child's wall
 //!   time from start to exit (time to first pixel: compile, assets, BVHs, pipelines, render, PNG)
@@ -152,6 +153,7 @@ fn child(exe: &Path) -> Command {
         cmd.env_remove(name);
     }
     cmd.env("MESA_SHADER_CACHE_DISABLE", "true")
+        .env("__GL_SHADER_DISK_CACHE", "0")
         .env(rtc_runtime::gpu::PIPELINE_CACHE_ENV, "off")
         .args(["--color", "never"]);
     cmd
@@ -455,7 +457,7 @@ fn seconds(ms: Option<f64>) -> String {
 /// The table printed on stdout.
 pub fn table(report: &Report) -> String {
     let mut out = String::from(
-        "cold compile (MESA_SHADER_CACHE_DISABLE=true, RTC_PIPELINE_CACHE=off, 64x48, 1 spp; \
+        "cold compile (MESA_SHADER_CACHE_DISABLE=true, __GL_SHADER_DISK_CACHE=0, RTC_PIPELINE_CACHE=off, 64x48, 1 spp; \
          jit: the child's, from its host line):\n",
     );
     let width = report
@@ -540,6 +542,7 @@ pub fn json(report: &Report, adapter_note: &str, jit: &str) -> serde_json::Value
     serde_json::json!({
         "environment": {
             "MESA_SHADER_CACHE_DISABLE": "true",
+            "__GL_SHADER_DISK_CACHE": "0",
             "RTC_PIPELINE_CACHE": "off",
             "size": SIZE,
             "spp": 1,
@@ -685,6 +688,28 @@ mod tests {
         }
         for rtc in ["/work/target/release/rtc", "rtc", "/usr/bin/rtc-ld", "/"] {
             assert!(!started_by_a_loader(Path::new(rtc)), "{rtc}");
+        }
+    }
+
+    #[test]
+    fn a_child_starts_with_every_cache_off() {
+        let cmd = child(Path::new("/work/target/release/rtc"));
+        let envs: Vec<(String, Option<String>)> = cmd
+            .get_envs()
+            .map(|(k, v)| {
+                let s = |o: &std::ffi::OsStr| o.to_string_lossy().into_owned();
+                (s(k), v.map(s))
+            })
+            .collect();
+        for (name, value) in [
+            ("MESA_SHADER_CACHE_DISABLE", "true"),
+            ("__GL_SHADER_DISK_CACHE", "0"),
+            (rtc_runtime::gpu::PIPELINE_CACHE_ENV, "off"),
+        ] {
+            assert!(
+                envs.contains(&(name.to_string(), Some(value.to_string()))),
+                "{name}={value} in {envs:?}"
+            );
         }
     }
 
