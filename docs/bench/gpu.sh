@@ -33,6 +33,8 @@ if [[ $mode == prepare ]]; then
     strip .device/bin/*
     tar -C .device -cJf .device/bin.tar.xz bin
     rm -r .device/bin
+    # The machine there gets no .git: the commit the binaries were built from travels with them.
+    git rev-parse --short HEAD > .device/commit
     if [[ ! -d .gl ]]; then
         mkdir -p .gl /tmp/amd64/partial
         o=(-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64)
@@ -60,7 +62,8 @@ fi
 for b in target/release/rtc target/release/examples/session_bench target/release/examples/embed; do
     [[ -x $b ]] || { echo "error: $b is missing: run 'bash docs/bench/gpu.sh prepare' here first" >&2; exit 1; }
 done
-if ! ldconfig -p | grep -q 'libvulkan\.so\.1'; then
+# (`grep` without `-q` reads all of ldconfig's output: no broken pipe for `pipefail` to report.)
+if ! ldconfig -p | grep 'libvulkan\.so\.1' > /dev/null; then
     for f in .gl/*.deb; do dpkg -x "$f" /; done
     ldconfig
 fi
@@ -69,6 +72,10 @@ if [[ -f $icd && -z ${VK_DRIVER_FILES:-} ]]; then
     export VK_DRIVER_FILES=$icd
 fi
 export RTC_PREBUILT=1 RTC_STDLIB=$PWD/stdlib XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
+# From here on a failing step is reported and the next one runs: one run of the script is all a
+# lent machine's time allows.
+set +e
+[[ -f .device/commit ]] && echo "binaries built from commit $(cat .device/commit)"
 command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv
 source docs/bench/host.sh
 rtc=target/release/rtc
