@@ -8,7 +8,7 @@
 //!
 //! `cargo run --release -p rtc-bvh --example coherence -- MESH.obj [WIDTH]` (WIDTH 4 by default;
 //! `examples/thesis_scene/bunny-6k.obj` for the figures cited).
-//! Measured with it: docs/bench/lavapipe.md, "Five things tried on Zen 5, none kept (2026-12-08)".
+//! Measured with it: docs/bench/lavapipe.md, "Six things tried on Zen 5, none kept (2026-12-08)".
 
 use glam::Vec3;
 use rtc_bvh::quantized::{quantize, Child, QuantizedBvh};
