@@ -2,9 +2,9 @@
 # The figures the open issues ask of a real GPU, in one run short enough for a lent machine's
 # 15 minutes (about 3 minutes on lavapipe on this project's 2-core VM; not yet run on a GPU):
 # the thesis frame with both execution models (issues 18 and 23), every example's cold compile
-# and the material edit (`rtc bench --compile`, issue 18), every example's frame with both models (exec_models.sh, issue 18), the live session against
-# rebuilding (session_bench at 960x540 and 1920x1080, issue 17) and the embedding example's frame
-# pacing (issue 17).
+# and the material edit (`rtc bench --compile`, issue 18), every example's frame with both models
+# (exec_models.sh, issue 18), the live session against rebuilding (session_bench at 960x540 and
+# 1920x1080, issue 17) and the embedding example's frame pacing (issue 17).
 #
 #   bash docs/bench/gpu.sh prepare   # here: builds, strips and packs the binaries into .device/,
 #                                    # and fetches the Vulkan loader's packages into .gl/
